@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: MIT
+// The one parallel seam of the library (style habit 6).
+// - parallelFor(n, body): body(i) for i in [0, n), OpenMP static schedule. Each i must write
+//   only its own entries (gather, never scatter), so results do not depend on the thread count.
+// - deterministicSum(n, term): Σ term(i) summed in fixed chunks and a fixed order, so the
+//   result is bit-identical for any thread count (an OpenMP reduction would not be).
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace gsph {
+
+template <class Body>
+inline void parallelFor(std::ptrdiff_t n, Body&& body) {
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
+}
+
+/// Chunk size of deterministicSum; fixed so that the summation order never changes.
+inline constexpr std::ptrdiff_t kReductionChunk = 2048;
+
+template <class T, class Term>
+inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term) {
+    const std::ptrdiff_t chunks = (n + kReductionChunk - 1) / kReductionChunk;
+    std::vector<T> partial(static_cast<std::size_t>(chunks), zero);
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t c = 0; c < chunks; ++c) {
+        T s = zero;
+        const std::ptrdiff_t end = std::min(n, (c + 1) * kReductionChunk);
+        for (std::ptrdiff_t i = c * kReductionChunk; i < end; ++i) s += term(i);
+        partial[static_cast<std::size_t>(c)] = s;
+    }
+    T total = zero;
+    for (const T& s : partial) total += s;
+    return total;
+}
+
+/// Minimum of term(i) over [0, n); exact, so independent of the thread count.
+template <class Term>
+inline double parallelMin(std::ptrdiff_t n, double init, Term&& term) {
+    double m = init;
+#pragma omp parallel for schedule(static) reduction(min : m)
+    for (std::ptrdiff_t i = 0; i < n; ++i) m = std::min(m, term(i));
+    return m;
+}
+
+}  // namespace gsph

@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// Monaghan-type artificial viscosity of the paper (Eq. for Π_ab), as a pair pressure.
+//   π_ab = (−β1 c̄ φ + β2 φ²)/ρ̄  if v_ab·x_ab < 0, else 0,
+//   φ = h_ab (v_ab·x_ab)/(|x_ab|² + 0.01 h_ab²),  c̄, ρ̄ = pair means of sound speed and
+//   current density, v_ab = v_a − v_b, x_ab = x_a − x_b.
+// The physical smoothing length of the pair follows from the metric: h_ab = h·|X_ab|/|θ_ab|
+// (DESIGN §4). The paper's Π_ab = J F^{-T} π_ab (its transpose convention fixed) enters the
+// total Lagrangian force like a pressure q_ab = ρ̄² π_ab: forces/internal_force.hpp.
+#pragma once
+
+#include "core/types.hpp"
+
+namespace gsph {
+
+struct ViscosityCoefficients {
+    double linear = 0.0;     ///< β1
+    double quadratic = 0.0;  ///< β2
+    bool enabled() const { return linear != 0.0 || quadratic != 0.0; }
+};
+
+/// Pair pressure q_ab = ρ̄² π_ab [Pa] (0 for separating pairs).
+inline double viscousPairPressure(const ViscosityCoefficients& c, const Vec3& xab, const Vec3& vab,
+                                  double hab, double cbar, double rhobar) {
+    const double vx = vab.dot(xab);
+    if (vx >= 0.0) return 0.0;
+    const double phi = hab * vx / (xab.squaredNorm() + 0.01 * hab * hab);
+    const double pi = (-c.linear * cbar * phi + c.quadratic * phi * phi) / rhobar;
+    return rhobar * rhobar * pi;
+}
+
+}  // namespace gsph

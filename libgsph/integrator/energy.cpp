@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#include "integrator/energy.hpp"
+
+#include <Eigen/LU>
+
+#include "core/parallel.hpp"
+
+namespace gsph {
+
+EnergyReport measureEnergy(const Reference& ref, const State& state,
+                           const std::vector<BodyRange>& bodies) {
+    EnergyReport e;
+    e.kinetic = deterministicSum(ref.size(), 0.0, [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        return 0.5 * ref.mass[ia] * state.v[ia].squaredNorm();
+    });
+    e.momentum = deterministicSum(ref.size(), Vec3(Vec3::Zero()), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        return Vec3(ref.mass[ia] * state.v[ia]);
+    });
+    for (const BodyRange& body : bodies) {
+        e.elastic += std::visit(
+            [&](const auto& model) {
+                return deterministicSum(body.end - body.begin, 0.0, [&](Index i) {
+                    const auto ia = static_cast<std::size_t>(body.begin + i);
+                    return ref.quadVolume[ia] * state.F[ia].determinant() *
+                           model.storedEnergyDensity(state.cauchy[ia]);
+                });
+            },
+            *body.material);
+    }
+    e.viscousWork = state.ledger.viscousWork;
+    e.hourglassWork = state.ledger.hourglassWork;
+    e.boundaryWork = state.ledger.boundaryWork;
+    return e;
+}
+
+}  // namespace gsph

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Velocity-Verlet step exactly as Algorithm 1 of the paper (DESIGN §4):
+//   1. v_{n+½} = v_n + ½Δt a_n                         (then constraints at t_n + ½Δt)
+//   2. x_{n+1} = x_n + Δt v_{n+½}
+//   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
+//   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}
+//   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m
+//   6. v_{n+1} = v_{n+½} + ½Δt a_{n+1}                   (then constraints at t_{n+1})
+//   7. Δt_{n+1} = CFL · min_a ℓ_a/(c_a + |v_a|), ℓ_a = current particle spacing
+// On entry `state` holds t_n, x_n, v_n, a_n, F_n, σ_n, Δt_n; on exit the same at n+1.
+// Throws NumericalError (particle, time) on a NaN or an inverted particle (J ≤ 0); the state
+// is then the partially advanced one, for a final diagnostic snapshot.
+#pragma once
+
+#include <vector>
+
+#include "boundary/constraints.hpp"
+#include "forces/internal_force.hpp"
+#include "materials/material.hpp"
+#include "particles/reference.hpp"
+#include "particles/state.hpp"
+
+namespace gsph {
+
+struct SolverOptions {
+    double cfl = 0.3;                 ///< Courant number of the time step
+    ViscosityCoefficients viscosity;  ///< β1, β2 (paper: Monaghan)
+    double hourglass = 0.0;           ///< α of forces/hourglass.hpp (0 = off)
+    double fixedTimeStep = 0.0;       ///< > 0: use this Δt instead of the CFL estimate
+};
+
+/// Contiguous range of one body and its material.
+struct BodyRange {
+    Index begin = 0, end = 0;
+    const Material* material = nullptr;
+};
+
+/// Scratch arrays of a step, sized once (no allocation inside the step).
+struct StepWorkspace {
+    StressFactors factors;
+    ForceParts parts;
+    std::vector<Vec3> force;
+    std::vector<double> lengthScale;  ///< current spacing ℓ_a
+    void resize(std::size_t n);
+};
+
+class VelocityVerlet {
+  public:
+    VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
+                   std::vector<VelocityConstraint> constraints, SolverOptions options);
+
+    /// Computes a_n, the stress factors and Δt_n for a state (once, before the first step).
+    void initialize(State& state);
+    void step(State& state);
+
+    const StepWorkspace& workspace() const { return work_; }
+    const SolverOptions& options() const { return options_; }
+
+  private:
+    void updateKinematicsAndStress(State& state, double dt, bool atRest);
+    void computeAccelerations(State& state);
+    void applyConstraints(State& state, double t);
+    double nonConservativePower(const State& state, const std::vector<Vec3>& part) const;
+    double boundaryPower(const State& state) const;
+    double stableTimeStep(const State& state) const;
+
+    const Reference& ref_;
+    std::vector<BodyRange> bodies_;
+    std::vector<VelocityConstraint> constraints_;
+    SolverOptions options_;
+    StepWorkspace work_;
+};
+
+}  // namespace gsph

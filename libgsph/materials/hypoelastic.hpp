@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// Hypo-elastic material with the Jaumann objective rate (DESIGN §5, paper Eq. CauchyTensor):
+//   σ̇ = C : D + W σ − σ W,   C : D = λ tr(D) I + 2G D,   D = sym L, W = skew L, L = Ḟ F^{-1}.
+//
+// The material interface every strength model follows (JohnsonCook extends it in issue #5):
+//   void update(MaterialPoint&, const Mat3& D, const Mat3& W, double dt) const;
+//   double waveSpeed(const MaterialPoint&) const;        // for the time step and viscosity
+//   double storedEnergyDensity(const Mat3& cauchy) const; // per current volume
+//   const ElasticConstants& elastic() const;
+// Models are plain values held in a std::variant (materials/material.hpp): no virtual call per
+// particle (style habit 7).
+#pragma once
+
+#include "core/types.hpp"
+#include "materials/elastic_constants.hpp"
+
+namespace gsph {
+
+/// What a strength model sees of one particle during a step.
+struct MaterialPoint {
+    Mat3 cauchy = Mat3::Zero();  ///< in: σ_n; out: σ_{n+1} [Pa]
+    double density = 0.0;        ///< current density ρ0/J [kg/m³]
+};
+
+/// σ_n + Δt (C : D + W σ − σ W): the elastic trial stress of every model (Jaumann rate).
+inline Mat3 jaumannElasticUpdate(const ElasticConstants& e, const Mat3& sigma, const Mat3& D,
+                                 const Mat3& W, double dt) {
+    const double lambda = e.lame();
+    const double G = e.shearModulus();
+    const Mat3 rate = lambda * D.trace() * Mat3::Identity() + 2.0 * G * D + W * sigma - sigma * W;
+    return sigma + dt * rate;
+}
+
+class HypoElastic {
+  public:
+    explicit HypoElastic(const ElasticConstants& e) : elastic_(e) {}
+
+    const ElasticConstants& elastic() const { return elastic_; }
+
+    void update(MaterialPoint& p, const Mat3& D, const Mat3& W, double dt) const {
+        p.cauchy = jaumannElasticUpdate(elastic_, p.cauchy, D, W, dt);
+    }
+
+    double waveSpeed(const MaterialPoint&) const { return elastic_.pWaveSpeed(); }
+
+    /// Complementary energy s:s/(4G) + p²/(2K) [J/m³]: the stored energy of linear elasticity
+    /// written in the stress, exact for small strains.
+    double storedEnergyDensity(const Mat3& sigma) const {
+        const double p = sigma.trace() / 3.0;
+        const Mat3 s = sigma - p * Mat3::Identity();
+        return s.squaredNorm() / (4.0 * elastic_.shearModulus()) +
+               p * p / (2.0 * elastic_.bulkModulus());
+    }
+
+  private:
+    ElasticConstants elastic_;
+};
+
+}  // namespace gsph

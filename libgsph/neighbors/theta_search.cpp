@@ -1,0 +1,351 @@
+// SPDX-License-Identifier: MIT
+#include "neighbors/theta_search.hpp"
+
+#include <nanoflann.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "kernel/cubic_bspline.hpp"
+
+namespace gsph {
+namespace {
+
+// Pairs at exactly q = 2 have W = ∇W = 0; the tolerance keeps them out whatever the round-off.
+constexpr double kSupportTolerance = 1e-10;
+// θ-offsets within this fraction of Δθ of an integer vector are lattice offsets.
+constexpr double kLatticeTolerance = 1e-6;
+
+struct SpaceSearch {
+    const LatticeSpace* lattice = nullptr;
+    double radius2 = 0.0;  // (2h)², shrunk by kSupportTolerance
+    Vec3 period = Vec3::Zero();
+    int stencilHalfWidth = 0;  // m: lattice offsets lie in [−m, m]^3
+    Index tableStart = 0;      // first kernel-table entry of this space
+};
+
+Vec3 minimumImage(Vec3 r, const SpaceSearch& s) {
+    for (int d = 0; d < 3; ++d)
+        if (s.lattice->periodic[d]) r[d] -= s.period[d] * std::round(r[d] / s.period[d]);
+    return r;
+}
+
+Index latticeKernelId(const Vec3& r, const SpaceSearch& s) {
+    const int m = s.stencilHalfWidth;
+    const int w = 2 * m + 1;
+    Index id = 0;
+    for (int d = 0; d < 3; ++d) {
+        const double o = r[d] / s.lattice->dtheta;
+        const double k = std::round(o);
+        if (std::abs(o - k) > kLatticeTolerance || std::abs(k) > m) return -1;
+        id = id * w + static_cast<Index>(k) + m;
+    }
+    return s.tableStart + id;
+}
+
+KernelEntry kernelEntry(const CubicBSpline& kernel, const Vec3& r) {
+    KernelEntry e;
+    const double d = r.norm();
+    e.gradW = kernel.gradient(r);
+    e.W = kernel.value(d);
+    e.hOverR = d > 0.0 ? kernel.smoothingLength() / d : 0.0;
+    e.thetaOffset = r;
+    return e;
+}
+
+std::vector<SpaceSearch> prepareSpaces(Reference& ref) {
+    if (ref.spaces.empty()) throw InputError("reference has no generalized space");
+    std::vector<SpaceSearch> out(ref.spaces.size());
+    ref.pairs.table.clear();
+    for (std::size_t s = 0; s < ref.spaces.size(); ++s) {
+        const LatticeSpace& L = ref.spaces[s];
+        if (!(L.dtheta > 0.0)) throw InputError("space " + std::to_string(s) + ": Δθ must be > 0");
+        const CubicBSpline kernel(ref.dim.value, ref.kappa * L.dtheta);
+        SpaceSearch& S = out[s];
+        S.lattice = &L;
+        const double R = kernel.supportRadius();
+        S.radius2 = R * R * (1.0 - kSupportTolerance);
+        for (int d = 0; d < 3; ++d) S.period[d] = L.cells[static_cast<std::size_t>(d)] * L.dtheta;
+        S.stencilHalfWidth = static_cast<int>(std::ceil(2.0 * ref.kappa));
+        S.tableStart = static_cast<Index>(ref.pairs.table.size());
+        const int m = S.stencilHalfWidth;
+        for (int i = -m; i <= m; ++i)
+            for (int j = -m; j <= m; ++j)
+                for (int k = -m; k <= m; ++k)
+                    ref.pairs.table.push_back(kernelEntry(kernel, Vec3(i, j, k) * L.dtheta));
+    }
+    return out;
+}
+
+// Calls visit(b, r) for every candidate b of particle a (r = θ_a − θ_b, minimum image) within
+// the support; implemented by the two search structures below.
+class CellList {
+  public:
+    CellList(const Reference& ref, const std::vector<SpaceSearch>& spaces) : ref_(ref) {
+        grids_.resize(spaces.size());
+        for (std::size_t s = 0; s < spaces.size(); ++s) {
+            Grid& g = grids_[s];
+            g.search = &spaces[s];
+            const double R = std::sqrt(spaces[s].radius2 / (1.0 - kSupportTolerance));
+            for (int d = 0; d < 3; ++d) {
+                g.lo[d] = 0.0;
+                const double extent = std::max(spaces[s].period[d], R);
+                g.n[d] = std::max(1, static_cast<int>(std::floor(extent / R)));
+                g.cellSize[d] = extent / g.n[d];
+            }
+        }
+        // θ may lie off the lattice box (never on one space today, but cheap to allow).
+        const Index n = ref.size();
+        cellOf_.resize(static_cast<std::size_t>(n));
+        std::vector<std::vector<Index>> members(spaces.size());
+        for (Index a = 0; a < n; ++a) {
+            const Index s = ref.space[static_cast<std::size_t>(a)];
+            Grid& g = grids_[static_cast<std::size_t>(s)];
+            cellOf_[static_cast<std::size_t>(a)] =
+                g.cellIndex(ref.theta[static_cast<std::size_t>(a)]);
+        }
+        for (Grid& g : grids_) g.start.assign(static_cast<std::size_t>(g.cells()) + 1, 0);
+        for (Index a = 0; a < n; ++a)
+            ++grids_[static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)])]
+                  .start[static_cast<std::size_t>(cellOf_[static_cast<std::size_t>(a)]) + 1];
+        for (Grid& g : grids_) {
+            for (std::size_t c = 1; c < g.start.size(); ++c) g.start[c] += g.start[c - 1];
+            g.members.resize(static_cast<std::size_t>(g.start.back()));
+        }
+        std::vector<std::vector<Index>> fill(grids_.size());
+        for (std::size_t s = 0; s < grids_.size(); ++s)
+            fill[s].assign(grids_[s].start.begin(), grids_[s].start.end() - 1);
+        for (Index a = 0; a < n; ++a) {  // ascending a ⇒ each cell's members sorted
+            const std::size_t s = static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)]);
+            const Index c = cellOf_[static_cast<std::size_t>(a)];
+            grids_[s].members[static_cast<std::size_t>(fill[s][static_cast<std::size_t>(c)]++)] = a;
+        }
+    }
+
+    template <class Visit>
+    void forEachCandidate(Index a, Visit&& visit) const {
+        const Grid& g = grids_[static_cast<std::size_t>(ref_.space[static_cast<std::size_t>(a)])];
+        const Vec3& ta = ref_.theta[static_cast<std::size_t>(a)];
+        int base[3];
+        g.cellCoords(cellOf_[static_cast<std::size_t>(a)], base);
+        Index seen[27];
+        int nSeen = 0;
+        const int zr = ref_.dim.value == 2 ? 0 : 1;
+        for (int dx = -1; dx <= 1; ++dx)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dz = -zr; dz <= zr; ++dz) {
+                    const int c[3] = {base[0] + dx, base[1] + dy, base[2] + dz};
+                    const Index cell = g.wrap(c);
+                    if (cell < 0 || std::find(seen, seen + nSeen, cell) != seen + nSeen) continue;
+                    seen[nSeen++] = cell;
+                    for (Index k = g.start[static_cast<std::size_t>(cell)];
+                         k < g.start[static_cast<std::size_t>(cell) + 1]; ++k) {
+                        const Index b = g.members[static_cast<std::size_t>(k)];
+                        const Vec3 r =
+                            minimumImage(ta - ref_.theta[static_cast<std::size_t>(b)], *g.search);
+                        if (r.squaredNorm() < g.search->radius2) visit(b, r);
+                    }
+                }
+    }
+
+  private:
+    struct Grid {
+        const SpaceSearch* search = nullptr;
+        double lo[3] = {0, 0, 0};
+        double cellSize[3] = {1, 1, 1};
+        int n[3] = {1, 1, 1};
+        std::vector<Index> start, members;
+
+        Index cells() const { return static_cast<Index>(n[0]) * n[1] * n[2]; }
+        Index cellIndex(const Vec3& t) const {
+            int c[3];
+            for (int d = 0; d < 3; ++d) {
+                int i = static_cast<int>(std::floor((t[d] - lo[d]) / cellSize[d]));
+                if (search->lattice->periodic[d]) i = ((i % n[d]) + n[d]) % n[d];
+                c[d] = std::clamp(i, 0, n[d] - 1);
+            }
+            return (static_cast<Index>(c[0]) * n[1] + c[1]) * n[2] + c[2];
+        }
+        void cellCoords(Index cell, int c[3]) const {
+            c[2] = cell % n[2];
+            c[1] = (cell / n[2]) % n[1];
+            c[0] = cell / (n[1] * n[2]);
+        }
+        Index wrap(const int c[3]) const {
+            int w[3];
+            for (int d = 0; d < 3; ++d) {
+                w[d] = c[d];
+                if (search->lattice->periodic[d])
+                    w[d] = ((w[d] % n[d]) + n[d]) % n[d];
+                else if (w[d] < 0 || w[d] >= n[d])
+                    return -1;
+            }
+            return (static_cast<Index>(w[0]) * n[1] + w[1]) * n[2] + w[2];
+        }
+    };
+
+    const Reference& ref_;
+    std::vector<Grid> grids_;
+    std::vector<Index> cellOf_;
+};
+
+// nanoflann k-d tree per space; periodic indices are handled by adding image points of the
+// particles within one support of either end.
+class KdTreeSearch {
+  public:
+    KdTreeSearch(const Reference& ref, const std::vector<SpaceSearch>& spaces) : ref_(ref) {
+        trees_.resize(spaces.size());
+        for (std::size_t s = 0; s < spaces.size(); ++s) trees_[s].search = &spaces[s];
+        for (Index a = 0; a < ref.size(); ++a) {
+            Tree& t = trees_[static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)])];
+            addWithImages(t, a, ref.theta[static_cast<std::size_t>(a)], 0);
+        }
+        for (Tree& t : trees_) {
+            t.index =
+                std::make_unique<Index3>(3, t.cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
+            t.index->buildIndex();
+        }
+    }
+
+    template <class Visit>
+    void forEachCandidate(Index a, Visit&& visit) const {
+        const Tree& t = trees_[static_cast<std::size_t>(ref_.space[static_cast<std::size_t>(a)])];
+        const Vec3& ta = ref_.theta[static_cast<std::size_t>(a)];
+        std::vector<std::pair<std::uint32_t, double>> found;
+        t.index->radiusSearch(ta.data(), t.search->radius2, found,
+                              nanoflann::SearchParams(32, 0.0f, false));
+        for (const auto& [k, d2] : found) {
+            const Index b = t.cloud.owner[k];
+            visit(b, ta - t.cloud.points[k]);
+        }
+    }
+
+  private:
+    struct Cloud {
+        std::vector<Vec3> points;
+        std::vector<Index> owner;
+        std::size_t kdtree_get_point_count() const { return points.size(); }
+        double kdtree_get_pt(std::size_t i, std::size_t d) const {
+            return points[i][static_cast<int>(d)];
+        }
+        template <class Box>
+        bool kdtree_get_bbox(Box&) const {
+            return false;
+        }
+    };
+    using Index3 =
+        nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Cloud>, Cloud, 3>;
+    struct Tree {
+        const SpaceSearch* search = nullptr;
+        Cloud cloud;
+        std::unique_ptr<Index3> index;
+    };
+
+    void addWithImages(Tree& t, Index a, const Vec3& p, int fromDim) {
+        t.cloud.points.push_back(p);
+        t.cloud.owner.push_back(a);
+        const double R = std::sqrt(t.search->radius2);
+        for (int d = fromDim; d < 3; ++d) {
+            if (!t.search->lattice->periodic[d]) continue;
+            const double L = t.search->period[d];
+            Vec3 img = p;
+            if (p[d] < R)
+                img[d] += L;
+            else if (p[d] > L - R)
+                img[d] -= L;
+            else
+                continue;
+            addWithImages(t, a, img, d + 1);
+        }
+    }
+
+    const Reference& ref_;
+    std::vector<Tree> trees_;
+};
+
+template <class Search>
+void fillPairs(Reference& ref, const std::vector<SpaceSearch>& spaces, const Search& search) {
+    const Index n = ref.size();
+    PairList& P = ref.pairs;
+    std::vector<Index> count(static_cast<std::size_t>(n), 0);
+    auto sameBody = [&](Index a, Index b) {
+        return a != b &&
+               ref.body[static_cast<std::size_t>(a)] == ref.body[static_cast<std::size_t>(b)];
+    };
+    parallelFor(n, [&](Index a) {
+        Index c = 0;
+        search.forEachCandidate(a, [&](Index b, const Vec3&) { c += sameBody(a, b) ? 1 : 0; });
+        count[static_cast<std::size_t>(a)] = c;
+    });
+    P.offset.assign(static_cast<std::size_t>(n) + 1, 0);
+    for (Index a = 0; a < n; ++a)
+        P.offset[static_cast<std::size_t>(a) + 1] =
+            P.offset[static_cast<std::size_t>(a)] + count[static_cast<std::size_t>(a)];
+    P.neighbor.resize(static_cast<std::size_t>(P.offset.back()));
+    P.kernelId.resize(P.neighbor.size());
+    parallelFor(n, [&](Index a) {
+        std::vector<std::pair<Index, Index>> local;
+        local.reserve(static_cast<std::size_t>(count[static_cast<std::size_t>(a)]));
+        const SpaceSearch& s =
+            spaces[static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)])];
+        search.forEachCandidate(a, [&](Index b, const Vec3& r) {
+            if (sameBody(a, b)) local.emplace_back(b, latticeKernelId(r, s));
+        });
+        std::sort(local.begin(), local.end());
+        Index k = P.offset[static_cast<std::size_t>(a)];
+        for (const auto& [b, id] : local) {
+            P.neighbor[static_cast<std::size_t>(k)] = b;
+            P.kernelId[static_cast<std::size_t>(k)] = id;
+            ++k;
+        }
+    });
+    // Off-lattice offsets (not produced by one lattice space) each get their own table entry.
+    for (Index a = 0; a < n; ++a)
+        for (Index k = P.begin(a); k < P.end(a); ++k) {
+            if (P.kernelId[static_cast<std::size_t>(k)] >= 0) continue;
+            const Index b = P.neighbor[static_cast<std::size_t>(k)];
+            const std::size_t s = static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)]);
+            const Vec3 r = minimumImage(
+                ref.theta[static_cast<std::size_t>(a)] - ref.theta[static_cast<std::size_t>(b)],
+                spaces[s]);
+            const CubicBSpline kernel(ref.dim.value, ref.kappa * ref.spaces[s].dtheta);
+            P.kernelId[static_cast<std::size_t>(k)] = static_cast<Index>(P.table.size());
+            P.table.push_back(kernelEntry(kernel, r));
+        }
+}
+
+void checkReference(const Reference& ref) {
+    const std::size_t n = ref.X.size();
+    if (n == 0) throw InputError("reference has no particles");
+    if (ref.theta.size() != n || ref.body.size() != n || ref.space.size() != n)
+        throw InputError("reference arrays X, theta, body, space differ in length");
+    if (!(ref.kappa > 0.0)) throw InputError("kernel factor κ must be > 0");
+    if (ref.dim.value != 2 && ref.dim.value != 3) throw InputError("dimension must be 2 or 3");
+    for (std::size_t a = 0; a < n; ++a) {
+        if (ref.space[a] < 0 || static_cast<std::size_t>(ref.space[a]) >= ref.spaces.size())
+            throw InputError("particle " + std::to_string(a) + " has unknown space id " +
+                             std::to_string(ref.space[a]));
+        if (a > 0 && ref.body[a] < ref.body[a - 1])
+            throw InputError("particles are not sorted by body (particle " + std::to_string(a) +
+                             ")");
+        if (ref.dim.value == 2 && ref.theta[a][2] != ref.theta[0][2])
+            throw InputError("2-D reference with θ_z varying (particle " + std::to_string(a) + ")");
+    }
+}
+
+}  // namespace
+
+void buildPairs(Reference& ref, SearchMethod method) {
+    checkReference(ref);
+    const std::vector<SpaceSearch> spaces = prepareSpaces(ref);
+    if (method == SearchMethod::CellList)
+        fillPairs(ref, spaces, CellList(ref, spaces));
+    else
+        fillPairs(ref, spaces, KdTreeSearch(ref, spaces));
+}
+
+}  // namespace gsph

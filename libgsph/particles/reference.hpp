@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: MIT
+// The reference configuration: everything the total Lagrangian form fixes at t = 0
+// (style habit 2). Filled by a particle source (analytic map, particle file), completed once by
+// buildPairs() and computeGeometry(), then read-only for the whole run.
+//
+// Invariants after computeGeometry():
+//   * particles are sorted by body, so each body is one contiguous range;
+//   * pairs are symmetric (b in list of a ⇔ a in list of b) and never cross bodies;
+//   * F = [Σ_b ω_b (X_b − X_a) ⊗ ∇W_ab] G(a)^T + outOfPlane = I to round-off (DESIGN §3).
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "core/types.hpp"
+#include "neighbors/pair_list.hpp"
+
+namespace gsph {
+
+/// One lattice space (DESIGN §2): θ = (i+½, j+½, k+½)·Δθ, h = κΔθ.
+struct LatticeSpace {
+    double dtheta = 1.0;                   ///< Δθ, uniform in every index direction
+    std::array<int, 3> cells = {1, 1, 1};  ///< lattice extent per index (1 in z for 2-D)
+    std::array<bool, 3> periodic = {false, false, false};  ///< index closes on itself
+};
+
+struct Reference {
+    Dimension dim;
+    double kappa = 1.2;  ///< h = κΔθ (DESIGN §3)
+    std::vector<LatticeSpace> spaces;
+
+    // Per particle, from the particle source.
+    std::vector<Vec3> X;         ///< reference position [m]
+    std::vector<Vec3> theta;     ///< coordinates in the home space [θ units]
+    std::vector<double> mass;    ///< ρ0 · V [kg] (V = exact cell volume; per metre in 2-D)
+    std::vector<double> volume;  ///< exact cell volume from the map or mesh [m³]
+    std::vector<Index> body;     ///< body id; particles sorted by it
+    std::vector<Index> space;    ///< home space id
+
+    // Derived once (computeGeometry).
+    std::vector<double> omega;       ///< θ-volume quadrature weight ω = Δθ^d (DESIGN §3)
+    std::vector<Mat3> G;             ///< Q^T B^{-T}: maps ∇_θ W_ab to the physical g_ab
+    std::vector<double> quadVolume;  ///< ω det M: the volume in the energy Σ V Ψ(F) (DESIGN §4)
+    std::vector<double> spacing;     ///< smallest physical particle spacing Δθ·σ_min(M) [m]
+    std::vector<double> metricCondition;  ///< condition number of M = ∂X/∂θ
+    PairList pairs;
+
+    Index size() const { return static_cast<Index>(X.size()); }
+};
+
+}  // namespace gsph

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// The evolving state of a run: exactly what a checkpoint stores (style habit 2). Everything
+// else (stress measures used by the force, sound speeds) is derived from it and the Reference.
+#pragma once
+
+#include <vector>
+
+#include "core/types.hpp"
+
+namespace gsph {
+
+/// Work done by the non-conservative parts of the model, accumulated over the run [J].
+struct EnergyLedger {
+    double viscousWork = 0.0;    ///< dissipated by artificial viscosity (≥ 0)
+    double hourglassWork = 0.0;  ///< stored/dissipated by the hourglass control
+    double boundaryWork = 0.0;   ///< done on the body by prescribed-velocity particles
+    // Powers at the current time, for the trapezoidal rule of the next step [W].
+    double viscousPower = 0.0;
+    double hourglassPower = 0.0;
+    double boundaryPower = 0.0;
+};
+
+struct State {
+    double time = 0.0;
+    double dt = 0.0;  ///< the step the integrator takes next
+    long step = 0;
+    std::vector<Vec3> x;             ///< current position [m]
+    std::vector<Vec3> v;             ///< velocity [m/s]
+    std::vector<Vec3> acceleration;  ///< [m/s²], consistent with x and cauchy
+    std::vector<Mat3> F;             ///< deformation gradient
+    std::vector<Mat3> cauchy;        ///< Cauchy stress σ [Pa]
+    EnergyLedger ledger;
+
+    /// State at rest in the reference configuration.
+    static State atRest(const std::vector<Vec3>& X) {
+        State s;
+        const std::size_t n = X.size();
+        s.x = X;
+        s.v.assign(n, Vec3::Zero());
+        s.acceleration.assign(n, Vec3::Zero());
+        s.F.assign(n, Mat3::Identity());
+        s.cauchy.assign(n, Mat3::Zero());
+        return s;
+    }
+};
+
+}  // namespace gsph

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+#include "simulation.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.hpp"
+#include "spaces/metric.hpp"
+
+namespace gsph {
+
+Simulation::Simulation(Reference ref, std::vector<Material> materialsByBody, SolverOptions options,
+                       SearchMethod search)
+    : ref_(std::move(ref)), materials_(std::move(materialsByBody)), options_(options) {
+    if (ref_.pairs.particles() != ref_.size()) buildPairs(ref_, search);
+    if (ref_.G.size() != ref_.X.size()) computeGeometry(ref_);
+    // Bodies are contiguous ranges (Reference invariant, checked by buildPairs).
+    for (Index a = 0; a < ref_.size();) {
+        const Index id = ref_.body[static_cast<std::size_t>(a)];
+        Index end = a;
+        while (end < ref_.size() && ref_.body[static_cast<std::size_t>(end)] == id) ++end;
+        if (id < 0 || static_cast<std::size_t>(id) >= materials_.size())
+            throw InputError("body " + std::to_string(id) + " has no material");
+        bodies_.push_back({a, end, &materials_[static_cast<std::size_t>(id)]});
+        a = end;
+    }
+    state_ = State::atRest(ref_.X);
+}
+
+void Simulation::constrain(VelocityConstraint constraint) {
+    if (integrator_) throw Error("constraints must be set before the first step");
+    constraints_.push_back(std::move(constraint));
+}
+
+void Simulation::setVelocity(const std::function<Vec3(const Vec3& X)>& velocity) {
+    if (integrator_) throw Error("initial velocities must be set before the first step");
+    for (std::size_t a = 0; a < state_.v.size(); ++a) state_.v[a] = velocity(ref_.X[a]);
+}
+
+void Simulation::start() {
+    if (integrator_) return;
+    integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_);
+    integrator_->initialize(state_);
+}
+
+void Simulation::step() {
+    start();
+    integrator_->step(state_);
+}
+
+void Simulation::advanceTo(double endTime, const std::function<void(const State&)>& afterStep) {
+    start();
+    while (state_.time < endTime) {
+        // Land on endTime rather than overshoot it (1e-12 keeps round-off from adding a step).
+        const double remaining = endTime - state_.time;
+        if (remaining < 1e-12 * std::max(1.0, endTime)) break;
+        if (state_.dt > remaining) state_.dt = remaining;
+        integrator_->step(state_);
+        if (afterStep) afterStep(state_);
+    }
+}
+
+}  // namespace gsph

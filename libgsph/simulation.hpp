@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: MIT
+// The one composition point of the library: owns the reference configuration, the state, the
+// materials and the integrator of a run.
+//
+//   Simulation sim(std::move(ref), {HypoElastic(steel)}, options);  // builds pairs + geometry
+//   sim.constrain({"clamp", clampIds, {}});                           // fixed set
+//   sim.setVelocity([](const Vec3& X) { return Vec3(0, 0, -10); });
+//   sim.advanceTo(1e-3);
+//
+// Materials are indexed by body id. Constraints and initial velocities are set before the
+// first step (start() or the first advanceTo()).
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "boundary/constraints.hpp"
+#include "integrator/energy.hpp"
+#include "integrator/velocity_verlet.hpp"
+#include "materials/material.hpp"
+#include "neighbors/theta_search.hpp"
+#include "particles/reference.hpp"
+#include "particles/state.hpp"
+
+namespace gsph {
+
+class Simulation {
+  public:
+    /// Takes a reference with particles (X, θ, mass, body, space, spaces); builds its pairs and
+    /// geometry unless `ref.pairs` is already filled. Throws InputError if a body has no material.
+    Simulation(Reference ref, std::vector<Material> materialsByBody, SolverOptions options,
+               SearchMethod search = SearchMethod::CellList);
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    void constrain(VelocityConstraint constraint);
+    void setVelocity(const std::function<Vec3(const Vec3& X)>& velocity);
+
+    /// Computes the initial accelerations and time step; called by the first step if needed.
+    void start();
+    void step();
+    /// Steps until state().time ≥ endTime (the last step is shortened to land on it).
+    void advanceTo(double endTime, const std::function<void(const State&)>& afterStep = {});
+
+    const Reference& reference() const { return ref_; }
+    const State& state() const { return state_; }
+    State& state() { return state_; }
+    const std::vector<BodyRange>& bodies() const { return bodies_; }
+    const VelocityVerlet& integrator() const { return *integrator_; }
+    EnergyReport energy() const { return measureEnergy(ref_, state_, bodies_); }
+
+  private:
+    Reference ref_;
+    std::vector<Material> materials_;
+    SolverOptions options_;
+    std::vector<BodyRange> bodies_;
+    std::vector<VelocityConstraint> constraints_;
+    State state_;
+    std::unique_ptr<VelocityVerlet> integrator_;
+};
+
+}  // namespace gsph

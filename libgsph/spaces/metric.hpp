@@ -1,0 +1,23 @@
+// SPDX-License-Identifier: MIT
+// Corrected θ-gradients and the metric of each particle, computed once (DESIGN §3).
+//
+//   B(a)  = Σ_b ω_b (θ_b − θ_a) ⊗ ∇W_ab                    (first-order correction, CSPM)
+//   M(a)  = Σ_b ω_b (X_b − X_a) ⊗ B(a)^{-T} ∇W_ab = ∂X/∂θ  (exact for an affine map)
+//   Q(a)  = M(a)^{-1} = ∂θ/∂X,   g_ab = Q(a)^T B(a)^{-T} ∇W_ab = G(a) ∇W_ab
+// so that F(a) = Σ_b ω_b (x_b − x_a) ⊗ g_ab equals I to round-off at rest, and exactly the
+// applied gradient under any affine motion. In 2-D the zz entries of B and M are set to 1.
+//
+// Also fills, per particle: ω (= Δθ^d of its space), the quadrature volume ω·det M (the volume
+// that makes the discrete Piola identity of DESIGN §7 exact), the smallest physical spacing
+// Δθ·σ_min(M) (for the time step), and the condition number of M.
+#pragma once
+
+#include "particles/reference.hpp"
+
+namespace gsph {
+
+/// Requires ref.pairs (buildPairs). Throws NumericalError naming the particle if B or M is
+/// singular or M inverts the orientation (det M ≤ 0).
+void computeGeometry(Reference& ref);
+
+}  // namespace gsph
