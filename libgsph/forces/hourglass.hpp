@@ -5,7 +5,7 @@
 //   e_ab = ½ (F_a + F_b) X_ab − x_ab   (X_ab = X_b − X_a, x_ab = x_b − x_a),
 //   s_ab = e_ab · x̂_ab  (bond too short: s > 0),
 //   f_a −= k_ab s_ab x̂_ab,  f_b += k_ab s_ab x̂_ab,
-//   k_ab = α E ½ (V_a ω_b + V_b ω_a) W_ab / |X_ab|².
+//   k_ab = α E ½ (V_a + V_b) ω W_ab / |X_ab|²   (ω_a = ω_b = ω within a space).
 // It is central and antisymmetric (conserves linear and angular momentum) and vanishes for any
 // affine motion. Σ_b ω_b W_ab ≈ 1, so α is the penalty stiffness relative to E·Δx per particle.
 #pragma once
@@ -16,13 +16,14 @@
 
 namespace gsph {
 
-/// k_ab · s_ab: the signed magnitude of the hourglass pair force along x̂_ab, and x̂_ab.
-inline double hourglassPairForce(double alphaE, const Mat3& Fa, const Mat3& Fb, const Vec3& XabRef,
-                                 const Vec3& xab, double pairWeight, Vec3& direction) {
-    const double d = xab.norm();
-    direction = xab / d;
-    const double s = (0.5 * ((Fa + Fb) * XabRef) - xab).dot(direction);
-    return alphaE * pairWeight / XabRef.squaredNorm() * s;
+/// The hourglass force on a from b: −k_ab s_ab x̂_ab = −k_ab [(ē·x_ab)/|x_ab|²] x_ab, written
+/// without a square root (ē = ½(F_a + F_b) X_ab − x_ab). pairWeight = ½ (V_a + V_b) ω W_ab.
+inline Vec3 hourglassPairForce(double alphaE, const Mat3& Fa, const Mat3& Fb, const Vec3& XabRef,
+                               const Vec3& xab, double pairWeight) {
+    const double x2 = xab.squaredNorm();
+    const double predicted = 0.5 * ((Fa + Fb) * XabRef).dot(xab);  // ½(F_a + F_b) X_ab · x_ab
+    const double k = alphaE * pairWeight * (predicted - x2) / (XabRef.squaredNorm() * x2);
+    return -k * xab;
 }
 
 }  // namespace gsph

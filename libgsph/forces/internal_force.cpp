@@ -7,51 +7,74 @@
 namespace gsph {
 namespace {
 
+// The pair sums are split so that per pair only the neighbour's factor is applied:
+//   Σ_b (K_c + K_b) w_cb = K_c Σ_b w_cb + Σ_b K_b w_cb,   w_cb = ω ∇W_cb (table),
+// and the same for the viscous N terms weighted by q_cb.
 template <bool Viscous, bool Hourglass>
 void forceLoop(const Reference& ref, const State& state, const StressFactors& sf,
                const ForceOptions& opt, Index begin, Index end, std::vector<Vec3>& force,
                ForceParts& parts) {
     const PairList& P = ref.pairs;
+    const Index* nb = P.neighbor.data();
+    const Index* id = P.kernelId.data();
+    const KernelEntry* table = P.table.data();
+    const Vec3* x = state.x.data();
+    const Vec3* v = state.v.data();
+    const Vec3* X = ref.X.data();
+    const Mat3* K = sf.K.data();
+    const Mat3* N = sf.N.data();
+    const Mat3* F = state.F.data();
     const double alphaE = opt.hourglass * opt.youngsModulus;
     parallelFor(end - begin, [&](Index i) {
         const Index c = begin + i;
         const auto ic = static_cast<std::size_t>(c);
-        const Mat3& Kc = sf.K[ic];
-        const double wc = ref.omega[ic];
-        Vec3 f = Vec3::Zero();
-        Vec3 fv = Vec3::Zero();
+        Vec3 sumW = Vec3::Zero();   // Σ w_cb
+        Vec3 fK = Vec3::Zero();     // Σ K_b w_cb
+        Vec3 sumQW = Vec3::Zero();  // Σ q_cb w_cb
+        Vec3 fN = Vec3::Zero();     // Σ q_cb N_b w_cb
         Vec3 fh = Vec3::Zero();
+        const Vec3 xc = x[ic];
+        const Vec3 vc = v[ic];
+        const Vec3 Xc = X[ic];
+        const double cc = sf.soundSpeed[ic];
+        const double rhoc = sf.density[ic];
+        const double Vc = ref.quadVolume[ic];
+        const double hc = ref.smoothingLength[ic];
+        const Mat3 Fc = F[ic];
         for (Index k = P.begin(c); k < P.end(c); ++k) {
-            const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
-            const KernelEntry& e =
-                P.table[static_cast<std::size_t>(P.kernelId[static_cast<std::size_t>(k)])];
-            const double wb = ref.omega[b];
+            const auto b = static_cast<std::size_t>(nb[k]);
+            const KernelEntry& e = table[id[k]];
             // DESIGN §4: f_c = Σ_b (ω_b K_c + ω_c K_b) ∇W_cb
-            f.noalias() += (wb * Kc + wc * sf.K[b]) * e.gradW;
+            sumW += e.gradW;
+            fK.noalias() += K[b] * e.gradW;
             if constexpr (Viscous) {
-                const Vec3 xcb = state.x[ic] - state.x[b];
-                const Vec3 vcb = state.v[ic] - state.v[b];
+                const Vec3 xcb = xc - x[b];
+                const Vec3 vcb = vc - v[b];
                 if (vcb.dot(xcb) < 0.0) {
-                    const double hcb = e.hOverR * (ref.X[ic] - ref.X[b]).norm();
-                    const double q = viscousPairPressure(
-                        opt.viscosity, xcb, vcb, hcb, 0.5 * (sf.soundSpeed[ic] + sf.soundSpeed[b]),
-                        0.5 * (sf.density[ic] + sf.density[b]));
-                    fv.noalias() -= q * ((wb * sf.N[ic] + wc * sf.N[b]) * e.gradW);
+                    const double hcb = 0.5 * (hc + ref.smoothingLength[b]);
+                    const double q = viscousPairPressure(opt.viscosity, xcb, vcb, hcb,
+                                                         0.5 * (cc + sf.soundSpeed[b]),
+                                                         0.5 * (rhoc + sf.density[b]));
+                    sumQW += q * e.gradW;
+                    fN.noalias() += q * (N[b] * e.gradW);
                 }
             }
             if constexpr (Hourglass) {
-                Vec3 dir;
-                const double weight =
-                    0.5 * (ref.quadVolume[ic] * wb + ref.quadVolume[b] * wc) * e.W;
-                const double s =
-                    hourglassPairForce(alphaE, state.F[ic], state.F[b], ref.X[b] - ref.X[ic],
-                                       state.x[b] - state.x[ic], weight, dir);
-                fh.noalias() -= s * dir;
+                const double weight = 0.5 * (Vc + ref.quadVolume[b]) * e.W;
+                fh += hourglassPairForce(alphaE, Fc, F[b], X[b] - Xc, x[b] - xc, weight);
             }
         }
-        if constexpr (Viscous) parts.viscous[ic] = fv;
-        if constexpr (Hourglass) parts.hourglass[ic] = fh;
-        force[ic] = f + fv + fh;
+        Vec3 f = K[ic] * sumW + fK;
+        if constexpr (Viscous) {
+            const Vec3 fv = -(N[ic] * sumQW + fN);
+            parts.viscous[ic] = fv;
+            f += fv;
+        }
+        if constexpr (Hourglass) {
+            parts.hourglass[ic] = fh;
+            f += fh;
+        }
+        force[ic] = f;
     });
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "integrator/velocity_verlet.hpp"
 
+#include <omp.h>
+
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>
@@ -185,6 +187,7 @@ void VelocityVerlet::initialize(State& state) {
 }
 
 void VelocityVerlet::step(State& state) {
+    const double t0 = omp_get_wtime();
     const double dt = state.dt;
     const Index n = ref_.size();
     // 1–2: half kick and drift.
@@ -199,8 +202,11 @@ void VelocityVerlet::step(State& state) {
     });
     // 3–5: kinematics, stress, forces at t_{n+1} (viscosity sees v_{n+½}).
     state.time += dt;
+    const double t1 = omp_get_wtime();
     updateKinematicsAndStress(state, dt, false);
+    const double t2 = omp_get_wtime();
     computeAccelerations(state);
+    const double t3 = omp_get_wtime();
     // 6: second half kick.
     parallelFor(n, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
@@ -222,6 +228,10 @@ void VelocityVerlet::step(State& state) {
     L.boundaryPower = pb;
     // 7: next step size.
     state.dt = stableTimeStep(state);
+    const double t4 = omp_get_wtime();
+    times_.kinematicsAndStress += t2 - t1;
+    times_.forces += t3 - t2;
+    times_.other += (t1 - t0) + (t4 - t3);
 }
 
 }  // namespace gsph

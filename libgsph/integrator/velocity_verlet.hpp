@@ -35,6 +35,13 @@ struct BodyRange {
     const Material* material = nullptr;
 };
 
+/// Wall time spent in each phase of the steps taken so far [s] (for benchmarks and logs).
+struct PhaseTimes {
+    double kinematicsAndStress = 0.0;  ///< steps 3–4
+    double forces = 0.0;               ///< step 5
+    double other = 0.0;                ///< kicks, drift, constraints, energy ledger, Δt
+};
+
 /// Scratch arrays of a step, sized once (no allocation inside the step).
 struct StepWorkspace {
     StressFactors factors;
@@ -55,6 +62,7 @@ class VelocityVerlet {
 
     const StepWorkspace& workspace() const { return work_; }
     const SolverOptions& options() const { return options_; }
+    const PhaseTimes& phaseTimes() const { return times_; }
 
   private:
     void updateKinematicsAndStress(State& state, double dt, bool atRest);
@@ -69,6 +77,7 @@ class VelocityVerlet {
     std::vector<VelocityConstraint> constraints_;
     SolverOptions options_;
     StepWorkspace work_;
+    PhaseTimes times_;
 };
 
 }  // namespace gsph

@@ -13,23 +13,27 @@
 
 namespace gsph {
 
-/// Accumulates the θ-gradients of x and v at particle a (the inner pair loop of the step).
+/// Accumulates the θ-gradients Σ_b ω (x_b − x_a) ⊗ ∇W_ab and the same of v at particle a (the
+/// inner pair loop of the step), as Σ_b x_b ⊗ w_ab − x_a ⊗ Σ_b w_ab with w_ab = ω ∇W_ab.
 inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const Vec3* v, Mat3& gradX,
                            Mat3& gradV) {
     const PairList& P = ref.pairs;
     const auto ia = static_cast<std::size_t>(a);
-    gradX.setZero();
-    gradV.setZero();
-    const Vec3 xa = x[ia];
-    const Vec3 va = v[ia];
+    Mat3 sx = Mat3::Zero();
+    Mat3 sv = Mat3::Zero();
+    Vec3 sw = Vec3::Zero();
+    const Index* nb = P.neighbor.data();
+    const Index* id = P.kernelId.data();
+    const KernelEntry* table = P.table.data();
     for (Index k = P.begin(a); k < P.end(a); ++k) {
-        const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
-        const Vec3 w =
-            ref.omega[b] *
-            P.table[static_cast<std::size_t>(P.kernelId[static_cast<std::size_t>(k)])].gradW;
-        gradX.noalias() += (x[b] - xa) * w.transpose();
-        gradV.noalias() += (v[b] - va) * w.transpose();
+        const auto b = static_cast<std::size_t>(nb[k]);
+        const Vec3& w = table[id[k]].gradW;
+        sw += w;
+        sx.noalias() += x[b] * w.transpose();
+        sv.noalias() += v[b] * w.transpose();
     }
+    gradX = sx - x[ia] * sw.transpose();
+    gradV = sv - v[ia] * sw.transpose();
 }
 
 /// F for every particle from positions x (used by tests and diagnostics; the integrator fuses

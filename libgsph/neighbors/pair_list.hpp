@@ -16,11 +16,12 @@
 
 namespace gsph {
 
-/// Kernel data shared by every pair with the same θ-offset r = θ_a − θ_b.
+/// Kernel data shared by every pair with the same θ-offset r = θ_a − θ_b. Values carry the
+/// quadrature weight ω (θ-volume, DESIGN §3) of the pair's space: within one lattice space every
+/// particle has the same ω = Δθ^d, so ω_a = ω_b and the weight folds into the table.
 struct KernelEntry {
-    Vec3 gradW = Vec3::Zero();  ///< ∇_a W_ab = ∂W(θ_a − θ_b)/∂θ_a
-    double W = 0.0;             ///< W_ab
-    double hOverR = 0.0;        ///< h / |θ_a − θ_b|: physical smoothing length = hOverR·|X_ab|
+    Vec3 gradW = Vec3::Zero();        ///< ω ∇_a W_ab, ∇_a W_ab = ∂W(θ_a − θ_b)/∂θ_a
+    double W = 0.0;                   ///< ω W_ab
     Vec3 thetaOffset = Vec3::Zero();  ///< r = θ_a − θ_b (minimum image across periodic indices)
 };
 

@@ -47,12 +47,11 @@ Index latticeKernelId(const Vec3& r, const SpaceSearch& s) {
     return s.tableStart + id;
 }
 
-KernelEntry kernelEntry(const CubicBSpline& kernel, const Vec3& r) {
+KernelEntry kernelEntry(const CubicBSpline& kernel, double omega, const Vec3& r) {
     KernelEntry e;
     const double d = r.norm();
-    e.gradW = kernel.gradient(r);
-    e.W = kernel.value(d);
-    e.hOverR = d > 0.0 ? kernel.smoothingLength() / d : 0.0;
+    e.gradW = omega * kernel.gradient(r);
+    e.W = omega * kernel.value(d);
     e.thetaOffset = r;
     return e;
 }
@@ -76,7 +75,8 @@ std::vector<SpaceSearch> prepareSpaces(Reference& ref) {
         for (int i = -m; i <= m; ++i)
             for (int j = -m; j <= m; ++j)
                 for (int k = -m; k <= m; ++k)
-                    ref.pairs.table.push_back(kernelEntry(kernel, Vec3(i, j, k) * L.dtheta));
+                    ref.pairs.table.push_back(
+                        kernelEntry(kernel, thetaVolume(ref.dim, L), Vec3(i, j, k) * L.dtheta));
     }
     return out;
 }
@@ -314,7 +314,7 @@ void fillPairs(Reference& ref, const std::vector<SpaceSearch>& spaces, const Sea
                 spaces[s]);
             const CubicBSpline kernel(ref.dim.value, ref.kappa * ref.spaces[s].dtheta);
             P.kernelId[static_cast<std::size_t>(k)] = static_cast<Index>(P.table.size());
-            P.table.push_back(kernelEntry(kernel, r));
+            P.table.push_back(kernelEntry(kernel, thetaVolume(ref.dim, ref.spaces[s]), r));
         }
 }
 

@@ -24,6 +24,11 @@ struct LatticeSpace {
     std::array<bool, 3> periodic = {false, false, false};  ///< index closes on itself
 };
 
+/// θ-volume of one lattice cell, the quadrature weight ω = Δθ^d of DESIGN §3.
+inline double thetaVolume(const Dimension& dim, const LatticeSpace& s) {
+    return dim.value == 2 ? s.dtheta * s.dtheta : s.dtheta * s.dtheta * s.dtheta;
+}
+
 struct Reference {
     Dimension dim;
     double kappa = 1.2;  ///< h = κΔθ (DESIGN §3)
@@ -38,10 +43,11 @@ struct Reference {
     std::vector<Index> space;    ///< home space id
 
     // Derived once (computeGeometry).
-    std::vector<double> omega;       ///< θ-volume quadrature weight ω = Δθ^d (DESIGN §3)
-    std::vector<Mat3> G;             ///< Q^T B^{-T}: maps ∇_θ W_ab to the physical g_ab
+    std::vector<double> omega;  ///< θ-volume ω = Δθ^d (DESIGN §3; folded into pairs.table)
+    std::vector<Mat3> G;        ///< Q^T B^{-T}: maps ∇_θ W_ab to the physical g_ab
     std::vector<double> quadVolume;  ///< ω det M: the volume in the energy Σ V Ψ(F) (DESIGN §4)
     std::vector<double> spacing;     ///< smallest physical particle spacing Δθ·σ_min(M) [m]
+    std::vector<double> smoothingLength;  ///< physical h = κΔθ (det M)^{1/d} [m] (viscosity)
     std::vector<double> metricCondition;  ///< condition number of M = ∂X/∂θ
     PairList pairs;
 

@@ -25,11 +25,11 @@ void computeGeometry(Reference& ref) {
     const auto N = static_cast<std::size_t>(n);
     ref.omega.resize(N);
     for (std::size_t a = 0; a < N; ++a)
-        ref.omega[a] =
-            std::pow(ref.spaces[static_cast<std::size_t>(ref.space[a])].dtheta, ref.dim.value);
+        ref.omega[a] = thetaVolume(ref.dim, ref.spaces[static_cast<std::size_t>(ref.space[a])]);
     ref.G.resize(N);
     ref.quadVolume.resize(N);
     ref.spacing.resize(N);
+    ref.smoothingLength.resize(N);
     ref.metricCondition.resize(N);
     const Mat3 outOfPlane = ref.dim.outOfPlane();
     const PairList& P = ref.pairs;
@@ -45,8 +45,8 @@ void computeGeometry(Reference& ref) {
             // θ_b − θ_a = −r from the table: it carries the periodic minimum image.
             const KernelEntry& e =
                 P.table[static_cast<std::size_t>(P.kernelId[static_cast<std::size_t>(k)])];
-            B.noalias() -= ref.omega[b] * e.thetaOffset * e.gradW.transpose();
-            MX.noalias() += ref.omega[b] * (ref.X[b] - ref.X[ia]) * e.gradW.transpose();
+            B.noalias() -= e.thetaOffset * e.gradW.transpose();
+            MX.noalias() += (ref.X[b] - ref.X[ia]) * e.gradW.transpose();
         }
         B += outOfPlane;
         const double detB = B.determinant();
@@ -71,6 +71,7 @@ void computeGeometry(Reference& ref) {
                                          .homogeneous());
         const double dtheta = ref.spaces[static_cast<std::size_t>(ref.space[ia])].dtheta;
         ref.spacing[ia] = dtheta * s[d - 1];
+        ref.smoothingLength[ia] = ref.kappa * dtheta * std::pow(detM, 1.0 / d);
         ref.metricCondition[ia] = s[0] / s[d - 1];
     });
     for (std::size_t a = 0; a < N; ++a) {

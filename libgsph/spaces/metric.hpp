@@ -9,7 +9,8 @@
 //
 // Also fills, per particle: ω (= Δθ^d of its space), the quadrature volume ω·det M (the volume
 // that makes the discrete Piola identity of DESIGN §7 exact), the smallest physical spacing
-// Δθ·σ_min(M) (for the time step), and the condition number of M.
+// Δθ·σ_min(M) (time step), the physical smoothing length κΔθ (det M)^{1/d} (the paper's h_a of
+// the artificial viscosity) and the condition number of M.
 #pragma once
 
 #include "particles/reference.hpp"

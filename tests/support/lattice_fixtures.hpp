@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Shared helpers of the tests: analytic spaces built to the point where a test can use them,
+// interior-particle selection, and a stress-free elastic material.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "materials/material.hpp"
+#include "neighbors/theta_search.hpp"
+#include "spaces/analytic_maps.hpp"
+#include "spaces/metric.hpp"
+
+namespace gsph::testing {
+
+/// Reference over `map` with pairs and geometry built.
+inline Reference builtReference(const AnalyticMap& map, int dim, std::array<int, 3> cells,
+                                double kappa = 1.2, double density = 1000.0) {
+    Reference ref = latticeReference(map, dim, cells, density, kappa);
+    buildPairs(ref);
+    computeGeometry(ref);
+    return ref;
+}
+
+/// Particles whose lattice distance to every non-periodic boundary is at least `margin` cells.
+inline std::vector<Index> interiorParticles(const Reference& ref, int margin) {
+    const LatticeSpace& s = ref.spaces[0];
+    std::vector<Index> out;
+    for (Index a = 0; a < ref.size(); ++a) {
+        bool inside = true;
+        for (int d = 0; d < ref.dim.value; ++d) {
+            if (s.periodic[static_cast<std::size_t>(d)]) continue;
+            const int i = static_cast<int>(std::floor(ref.theta[static_cast<std::size_t>(a)][d] / s.dtheta));
+            if (i < margin || i >= s.cells[static_cast<std::size_t>(d)] - margin) inside = false;
+        }
+        if (inside) out.push_back(a);
+    }
+    return out;
+}
+
+/// Cells of one kernel support: ⌈2κ⌉.
+inline int supportCells(const Reference& ref) { return static_cast<int>(std::ceil(2.0 * ref.kappa)); }
+
+}  // namespace gsph::testing
