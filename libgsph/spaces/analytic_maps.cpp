@@ -137,7 +137,7 @@ Reference latticeReference(const AnalyticMap& map, int dimension, const std::arr
     ref.X.resize(n);
     ref.theta.resize(n);
     ref.volume.resize(n);
-    ref.mass.resize(n);
+    ref.density.assign(n, density);
     ref.body.assign(n, body);
     ref.space.assign(n, 0);
     const Vec3 ds(1.0 / cells[0], 1.0 / cells[1], 1.0 / cells[2]);
@@ -174,7 +174,6 @@ Reference latticeReference(const AnalyticMap& map, int dimension, const std::arr
                         }
                 V *= ds[0] * ds[1] * (dimension == 3 ? ds[2] : 1.0);
                 ref.volume[a] = V;
-                ref.mass[a] = density * V;
             }
     return ref;
 }

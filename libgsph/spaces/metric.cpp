@@ -28,6 +28,8 @@ void computeGeometry(Reference& ref) {
         ref.omega[a] = thetaVolume(ref.dim, ref.spaces[static_cast<std::size_t>(ref.space[a])]);
     ref.G.resize(N);
     ref.quadVolume.resize(N);
+    ref.mass.resize(N);
+    if (ref.density.size() != N) throw InputError("reference has no density per particle");
     ref.spacing.resize(N);
     ref.smoothingLength.resize(N);
     ref.metricCondition.resize(N);
@@ -64,6 +66,7 @@ void computeGeometry(Reference& ref) {
         const Mat3 Q = M.inverse();
         ref.G[ia] = Q.transpose() * Binv.transpose();
         ref.quadVolume[ia] = ref.omega[ia] * detM;
+        ref.mass[ia] = ref.density[ia] * ref.quadVolume[ia];
         const int d = ref.dim.value;
         const Vec3 s = d == 3 ? Vec3(Eigen::JacobiSVD<Mat3>(M).singularValues())
                               : Vec3(Eigen::JacobiSVD<Eigen::Matrix2d>(M.topLeftCorner<2, 2>())

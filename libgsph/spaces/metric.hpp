@@ -7,10 +7,10 @@
 // so that F(a) = Σ_b ω_b (x_b − x_a) ⊗ g_ab equals I to round-off at rest, and exactly the
 // applied gradient under any affine motion. In 2-D the zz entries of B and M are set to 1.
 //
-// Also fills, per particle: ω (= Δθ^d of its space), the quadrature volume ω·det M (the volume
-// that makes the discrete Piola identity of DESIGN §7 exact), the smallest physical spacing
-// Δθ·σ_min(M) (time step), the physical smoothing length κΔθ (det M)^{1/d} (the paper's h_a of
-// the artificial viscosity) and the condition number of M.
+// Also fills, per particle: ω (= Δθ^d of its space), the quadrature volume V = ω·det M (the
+// volume that makes the discrete Piola identity of DESIGN §7 exact), the mass ρ0 V, the smallest
+// physical spacing Δθ·σ_min(M) (time step), the physical smoothing length κΔθ (det M)^{1/d} (the
+// paper's h_a of the artificial viscosity) and the condition number of M.
 #pragma once
 
 #include "particles/reference.hpp"

@@ -11,8 +11,8 @@ namespace {
 
 void searchLattice(benchmark::State& state, gsph::SearchMethod method) {
     const int n = static_cast<int>(state.range(0));
-    const gsph::Reference base =
-        gsph::latticeReference(gsph::gradedBoxMap(gsph::Vec3(1, 1, 1), {}), 3, {n, n, n}, 1000.0, 1.2);
+    const gsph::Reference base = gsph::latticeReference(gsph::gradedBoxMap(gsph::Vec3(1, 1, 1), {}),
+                                                        3, {n, n, n}, 1000.0, 1.2);
     for (auto _ : state) {
         gsph::Reference ref = base;
         gsph::buildPairs(ref, method);
@@ -22,8 +22,12 @@ void searchLattice(benchmark::State& state, gsph::SearchMethod method) {
     state.SetLabel(std::to_string(n * n * n) + " particles");
 }
 
-void CellList(benchmark::State& s) { searchLattice(s, gsph::SearchMethod::CellList); }
-void KdTree(benchmark::State& s) { searchLattice(s, gsph::SearchMethod::KdTree); }
+void CellList(benchmark::State& s) {
+    searchLattice(s, gsph::SearchMethod::CellList);
+}
+void KdTree(benchmark::State& s) {
+    searchLattice(s, gsph::SearchMethod::KdTree);
+}
 
 BENCHMARK(CellList)->Arg(46)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(KdTree)->Arg(46)->Arg(100)->Unit(benchmark::kMillisecond)->UseRealTime();

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
     int steps = 100;
     double kappa = 1.2;
     bool noViscosity = false, noHourglass = false;
-    app.add_option("--cells", cells, "particles per edge of the cube (n³ particles)")->check(CLI::Range(8, 400));
+    app.add_option("--cells", cells, "particles per edge of the cube (n³ particles)")
+        ->check(CLI::Range(8, 400));
     app.add_option("--steps", steps, "time steps to run")->check(CLI::Range(1, 1000000));
     app.add_option("--kappa", kappa, "h = κΔθ (1.2: 56 neighbours)")->check(CLI::Range(0.6, 3.0));
     app.add_flag("--no-viscosity", noViscosity, "switch artificial viscosity off");
@@ -57,25 +58,30 @@ int main(int argc, char** argv) {
     if (!noViscosity) options.viscosity = {1.0, 1.0};
     if (!noHourglass) options.hourglass = 0.1;
     const double L = 0.1;  // a 10 cm steel cube
-    Reference ref = latticeReference(gradedBoxMap(Vec3(L, L, L), {}), 3, {cells, cells, cells}, 7800.0, kappa);
+    Reference ref =
+        latticeReference(gradedBoxMap(Vec3(L, L, L), {}), 3, {cells, cells, cells}, 7800.0, kappa);
     Simulation sim(std::move(ref), {HypoElastic(ElasticConstants(7800.0, 200e9, 0.3))}, options);
     // A compression wave from an impact on one face: every term of the step is active.
     sim.setVelocity([&](const Vec3& X) { return Vec3(0.0, 0.0, X[2] < 0.2 * L ? -50.0 : 0.0); });
     sim.start();
-    const double setupSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
+    const double setupSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
 
     const auto t0 = std::chrono::steady_clock::now();
     for (int s = 0; s < steps; ++s) sim.step();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     const double n = sim.reference().size();
     const double pairs = sim.reference().pairs.pairs();
     const PhaseTimes& ph = sim.integrator().phaseTimes();
     const double rate = n * steps / seconds;
     const int threads = omp_get_max_threads();
-    std::printf("particles            %.0f (%d³), %.1f neighbours per particle, κ = %.2f\n", n, cells, pairs / n, kappa);
+    std::printf("particles            %.0f (%d³), %.1f neighbours per particle, κ = %.2f\n", n,
+                cells, pairs / n, kappa);
     std::printf("threads              %d\n", threads);
-    std::printf("viscosity/hourglass  %s/%s\n", noViscosity ? "off" : "on", noHourglass ? "off" : "on");
+    std::printf("viscosity/hourglass  %s/%s\n", noViscosity ? "off" : "on",
+                noHourglass ? "off" : "on");
     std::printf("setup                %.2f s (pairs, metric, first forces)\n", setupSeconds);
     std::printf("steps                %d in %.3f s\n", steps, seconds);
     std::printf("particle-steps/s     %.3e  (%.3e per thread)\n", rate, rate / threads);
@@ -83,6 +89,7 @@ int main(int argc, char** argv) {
                 (peakResidentBytes() - baseline) / n);
     std::printf("pair-list bytes/particle %.0f\n", sim.reference().pairs.bytes() / n);
     std::printf("phases               kinematics+stress %.1f %%, forces %.1f %%, other %.1f %%\n",
-                100 * ph.kinematicsAndStress / seconds, 100 * ph.forces / seconds, 100 * ph.other / seconds);
+                100 * ph.kinematicsAndStress / seconds, 100 * ph.forces / seconds,
+                100 * ph.other / seconds);
     return 0;
 }

@@ -31,7 +31,8 @@ inline std::vector<Index> interiorParticles(const Reference& ref, int margin) {
         bool inside = true;
         for (int d = 0; d < ref.dim.value; ++d) {
             if (s.periodic[static_cast<std::size_t>(d)]) continue;
-            const int i = static_cast<int>(std::floor(ref.theta[static_cast<std::size_t>(a)][d] / s.dtheta));
+            const int i =
+                static_cast<int>(std::floor(ref.theta[static_cast<std::size_t>(a)][d] / s.dtheta));
             if (i < margin || i >= s.cells[static_cast<std::size_t>(d)] - margin) inside = false;
         }
         if (inside) out.push_back(a);
@@ -40,6 +41,8 @@ inline std::vector<Index> interiorParticles(const Reference& ref, int margin) {
 }
 
 /// Cells of one kernel support: ⌈2κ⌉.
-inline int supportCells(const Reference& ref) { return static_cast<int>(std::ceil(2.0 * ref.kappa)); }
+inline int supportCells(const Reference& ref) {
+    return static_cast<int>(std::ceil(2.0 * ref.kappa));
+}
 
 }  // namespace gsph::testing

@@ -33,19 +33,33 @@ struct NamedSpace {
 std::vector<NamedSpace> patchSpaces() {
     return {
         {"graded box 3-D (ratio 4 and 5)",
-         gradedBoxMap(Vec3(1.0, 0.6, 0.4), {AxisGrading{Kind::OneSided, 4.0}, AxisGrading{Kind::Symmetric, 5.0}, AxisGrading{}}),
-         3, {18, 16, 14}},
+         gradedBoxMap(Vec3(1.0, 0.6, 0.4), {AxisGrading{Kind::OneSided, 4.0},
+                                            AxisGrading{Kind::Symmetric, 5.0}, AxisGrading{}}),
+         3,
+         {18, 16, 14}},
         {"graded rectangle 2-D (ratio 4)",
-         gradedBoxMap(Vec3(1.0, 0.3, 0.0), {AxisGrading{Kind::OneSided, 4.0}, AxisGrading{Kind::Symmetric, 4.0}, AxisGrading{}}),
-         2, {30, 16, 1}},
-        {"annulus sector 3-D", annulusMap(0.5, 1.0, 0.0, std::acos(-1.0) / 2, 0.4), 3, {14, 16, 14}},
+         gradedBoxMap(Vec3(1.0, 0.3, 0.0), {AxisGrading{Kind::OneSided, 4.0},
+                                            AxisGrading{Kind::Symmetric, 4.0}, AxisGrading{}}),
+         2,
+         {30, 16, 1}},
+        {"annulus sector 3-D",
+         annulusMap(0.5, 1.0, 0.0, std::acos(-1.0) / 2, 0.4),
+         3,
+         {14, 16, 14}},
         {"full annulus 3-D (periodic, graded radius)",
-         annulusMap(0.3, 1.0, 0.0, 2 * std::acos(-1.0), 0.3, AxisGrading{Kind::OneSided, 4.0}), 3, {14, 40, 14}},
-        {"full annulus 2-D (periodic)", annulusMap(0.4, 1.0, 0.0, 2 * std::acos(-1.0), 0.0), 2, {14, 48, 1}},
+         annulusMap(0.3, 1.0, 0.0, 2 * std::acos(-1.0), 0.3, AxisGrading{Kind::OneSided, 4.0}),
+         3,
+         {14, 40, 14}},
+        {"full annulus 2-D (periodic)",
+         annulusMap(0.4, 1.0, 0.0, 2 * std::acos(-1.0), 0.0),
+         2,
+         {14, 48, 1}},
     };
 }
 
-ElasticConstants steel() { return ElasticConstants(7800.0, 200e9, 0.3); }
+ElasticConstants steel() {
+    return ElasticConstants(7800.0, 200e9, 0.3);
+}
 
 TEST(PatchTest, AffineMotionGivesExactF) {
     const Mat3 A = (Mat3() << 1.10, 0.07, -0.03, -0.05, 0.92, 0.04, 0.02, -0.06, 1.05).finished();
@@ -58,12 +72,14 @@ TEST(PatchTest, AffineMotionGivesExactF) {
             Ad(2, 2) = 1.0;
         }
         std::vector<Vec3> x(ref.X.size());
-        for (std::size_t a = 0; a < x.size(); ++a) x[a] = Ad * ref.X[a] + Vec3(0.3, -0.2, 0.1 * (s.dim == 3));
+        for (std::size_t a = 0; a < x.size(); ++a)
+            x[a] = Ad * ref.X[a] + Vec3(0.3, -0.2, 0.1 * (s.dim == 3));
         std::vector<Mat3> F;
         deformationGradient(ref, x, F);
         double worst = 0.0;
         for (const Mat3& Fa : F) worst = std::max(worst, (Fa - Ad).cwiseAbs().maxCoeff());
-        std::printf("[patch] %-42s affine F max error %.2e (%d particles)\n", s.name, worst, ref.size());
+        std::printf("[patch] %-42s affine F max error %.2e (%d particles)\n", s.name, worst,
+                    ref.size());
         EXPECT_LE(worst, 1e-10) << s.name;
     }
 }
@@ -72,7 +88,8 @@ TEST(PatchTest, AffineMotionGivesExactF) {
 std::vector<Vec3> forcesUnder(Simulation& sim) {
     sim.start();
     std::vector<Vec3> f(sim.state().acceleration.size());
-    for (std::size_t a = 0; a < f.size(); ++a) f[a] = sim.reference().mass[a] * sim.state().acceleration[a];
+    for (std::size_t a = 0; a < f.size(); ++a)
+        f[a] = sim.reference().mass[a] * sim.state().acceleration[a];
     return f;
 }
 
@@ -83,7 +100,10 @@ double singlePairForce(const Simulation& sim, Index c) {
     double m = 0.0;
     for (Index k = ref.pairs.begin(c); k < ref.pairs.end(c); ++k) {
         const auto b = static_cast<std::size_t>(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
-        const Vec3& g = ref.pairs.table[static_cast<std::size_t>(ref.pairs.kernelId[static_cast<std::size_t>(k)])].gradW;
+        const Vec3& g =
+            ref.pairs
+                .table[static_cast<std::size_t>(ref.pairs.kernelId[static_cast<std::size_t>(k)])]
+                .gradW;
         m = std::max(m, (ref.omega[b] * K * g).norm());
     }
     return m;
@@ -99,16 +119,21 @@ Mat3 uniformStress(int dim) {
 
 TEST(PatchTest, UniformStressGivesZeroInteriorForce) {
     for (const NamedSpace& s : patchSpaces()) {
-        Simulation sim(latticeReference(s.map, s.dim, s.cells, 7800.0, 1.2), {HypoElastic(steel())}, SolverOptions{});
+        Simulation sim(latticeReference(s.map, s.dim, s.cells, 7800.0, 1.2), {HypoElastic(steel())},
+                       SolverOptions{});
         for (Mat3& sigma : sim.state().cauchy) sigma = uniformStress(s.dim);
         const std::vector<Vec3> f = forcesUnder(sim);
         // The identity involves neighbours of neighbours: two supports from the boundary.
-        const std::vector<Index> interior = interiorParticles(sim.reference(), 2 * supportCells(sim.reference()));
+        const std::vector<Index> interior =
+            interiorParticles(sim.reference(), 2 * supportCells(sim.reference()));
         ASSERT_FALSE(interior.empty()) << s.name;
         double worst = 0.0;
-        for (Index c : interior) worst = std::max(worst, f[static_cast<std::size_t>(c)].norm() / singlePairForce(sim, c));
-        std::printf("[patch] %-42s uniform stress: max |f|/|f_pair| = %.2e over %zu interior particles\n", s.name,
-                    worst, interior.size());
+        for (Index c : interior)
+            worst =
+                std::max(worst, f[static_cast<std::size_t>(c)].norm() / singlePairForce(sim, c));
+        std::printf(
+            "[patch] %-42s uniform stress: max |f|/|f_pair| = %.2e over %zu interior particles\n",
+            s.name, worst, interior.size());
         EXPECT_LE(worst, 1e-10) << s.name;
         // Boundary particles do carry force (the traction σn): the test can fail.
         double boundaryMax = 0.0;
@@ -123,7 +148,8 @@ TEST(PatchTest, NonSeparableMapResidualConvergesAtSecondOrder) {
     std::vector<double> h, err;
     for (int n : {24, 32, 48, 64}) {
         const AnalyticMap map = wavyBoxMap(Vec3(1.0, 1.0, 1.0), 0.08);
-        Simulation sim(latticeReference(map, 3, {n, n, n}, 7800.0, 1.2), {HypoElastic(steel())}, SolverOptions{});
+        Simulation sim(latticeReference(map, 3, {n, n, n}, 7800.0, 1.2), {HypoElastic(steel())},
+                       SolverOptions{});
         for (Mat3& sigma : sim.state().cauchy) sigma = uniformStress(3);
         const std::vector<Vec3> f = forcesUnder(sim);
         const Reference& ref = sim.reference();
@@ -132,7 +158,9 @@ TEST(PatchTest, NonSeparableMapResidualConvergesAtSecondOrder) {
         for (Index a = 0; a < ref.size(); ++a) {
             const Vec3 s = ref.theta[static_cast<std::size_t>(a)] / n;
             if ((s.array() < 0.35).any() || (s.array() > 0.65).any()) continue;
-            e += std::pow(f[static_cast<std::size_t>(a)].norm() / ref.quadVolume[static_cast<std::size_t>(a)], 2);
+            e += std::pow(
+                f[static_cast<std::size_t>(a)].norm() / ref.quadVolume[static_cast<std::size_t>(a)],
+                2);
             ++count;
         }
         e = std::sqrt(e / count);
@@ -141,7 +169,8 @@ TEST(PatchTest, NonSeparableMapResidualConvergesAtSecondOrder) {
     }
     // Observed order: least-squares slope of log(error) against log(h).
     double mx = 0, my = 0;
-    for (std::size_t i = 0; i < h.size(); ++i) mx += std::log(h[i]) / h.size(), my += std::log(err[i]) / h.size();
+    for (std::size_t i = 0; i < h.size(); ++i)
+        mx += std::log(h[i]) / h.size(), my += std::log(err[i]) / h.size();
     double sxy = 0, sxx = 0;
     for (std::size_t i = 0; i < h.size(); ++i) {
         sxy += (std::log(h[i]) - mx) * (std::log(err[i]) - my);
@@ -161,10 +190,13 @@ TEST(PatchTest, IsolatedBodyConservesMomentumOver1000Steps) {
         SolverOptions opt;
         opt.viscosity = {1.0, 1.0};
         opt.hourglass = 0.1;
-        Simulation sim(latticeReference(s.map, s.dim, s.cells, 7800.0, 1.2), {HypoElastic(steel())}, opt);
+        Simulation sim(latticeReference(s.map, s.dim, s.cells, 7800.0, 1.2), {HypoElastic(steel())},
+                       opt);
         std::mt19937 rng(42);
         std::uniform_real_distribution<double> u(-1.0, 1.0);
-        sim.setVelocity([&](const Vec3&) -> Vec3 { return Vec3(u(rng), u(rng), s.dim == 3 ? u(rng) : 0.0) * 20.0; });
+        sim.setVelocity([&](const Vec3&) -> Vec3 {
+            return Vec3(u(rng), u(rng), s.dim == 3 ? u(rng) : 0.0) * 20.0;
+        });
         const EnergyReport start = sim.energy();
         double scale = 0.0;
         for (std::size_t a = 0; a < sim.state().v.size(); ++a)
