@@ -11,6 +11,8 @@
 // particle (style habit 7).
 #pragma once
 
+#include <Eigen/LU>
+
 #include "core/types.hpp"
 #include "materials/elastic_constants.hpp"
 
@@ -22,13 +24,16 @@ struct MaterialPoint {
     double density = 0.0;        ///< current density ρ0/J [kg/m³]
 };
 
-/// σ_n + Δt (C : D + W σ − σ W): the elastic trial stress of every model (Jaumann rate).
+/// The elastic trial stress of every model, Jaumann rate integrated incrementally objectively
+/// (Hughes & Winget 1980): σ_{n+1} = R σ_n R^T + Δt C : D, R = (I − ½ΔtW)^{-1}(I + ½ΔtW).
+/// R is exactly orthogonal, so a rigid spin leaves the invariants of σ unchanged to
+/// round-off; to first order in Δt this is σ_n + Δt (C : D + W σ − σ W).
 inline Mat3 jaumannElasticUpdate(const ElasticConstants& e, const Mat3& sigma, const Mat3& D,
                                  const Mat3& W, double dt) {
-    const double lambda = e.lame();
-    const double G = e.shearModulus();
-    const Mat3 rate = lambda * D.trace() * Mat3::Identity() + 2.0 * G * D + W * sigma - sigma * W;
-    return sigma + dt * rate;
+    const Mat3 halfSpin = 0.5 * dt * W;
+    const Mat3 R = (Mat3::Identity() - halfSpin).inverse() * (Mat3::Identity() + halfSpin);
+    const Mat3 elasticRate = e.lame() * D.trace() * Mat3::Identity() + 2.0 * e.shearModulus() * D;
+    return R * sigma * R.transpose() + dt * elasticRate;
 }
 
 class HypoElastic {
