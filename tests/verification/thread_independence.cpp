@@ -7,6 +7,7 @@
 
 #include <cstring>
 
+#include "core/parallel.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
 
@@ -22,11 +23,13 @@ State runWithThreads(int threads, EnergyReport* energy) {
     using Kind = AxisGrading::Kind;
     const AnalyticMap map = gradedBoxMap(
         Vec3(0.2, 0.1, 0.1), {AxisGrading{Kind::OneSided, 4.0}, AxisGrading{}, AxisGrading{}});
-    Simulation sim(latticeReference(map, 3, {24, 12, 12}, 7800.0, 1.2),
+    Simulation sim(latticeReference(map, 3, {32, 12, 12}, 7800.0, 1.2),
                    {HypoElastic(ElasticConstants(7800.0, 200e9, 0.3))}, options);
     sim.constrain(
         {"face", {0, 1, 2, 3}, [](double t, const Vec3&) { return Vec3(0, 0, 5.0 * t / 1e-5); }});
     sim.setVelocity([](const Vec3& X) { return Vec3(-40.0 * (X[0] > 0.15), 3.0 * X[1], 0.0); });
+    // Large enough that the loops really run on both threads (core/parallel.hpp).
+    EXPECT_GT(sim.reference().size(), kParallelThreshold);
     for (int i = 0; i < 150; ++i) sim.step();
     *energy = sim.energy();
     omp_set_num_threads(saved);
