@@ -27,16 +27,19 @@ DefineConstant[
 c = core * R;
 
 Point(1) = {0, 0, 0};  Point(2) = {c, 0, 0};  Point(3) = {c, c, 0};  Point(4) = {0, c, 0};
-Point(5) = {R, 0, 0};  Point(6) = {0, R, 0};
+Point(5) = {R, 0, 0};  Point(6) = {0, R, 0};  Point(7) = {R / Sqrt(2), R / Sqrt(2), 0};
 
 Line(1) = {1, 2};  Line(2) = {2, 3};  Line(3) = {3, 4};  Line(4) = {4, 1};  // core square
-Line(5) = {2, 5};  Circle(6) = {5, 1, 6};  Line(7) = {6, 4};                 // outer block
+// Outer block: the arc is cut at 45° (two arcs: gmsh reparametrises extruded 90° arcs poorly
+// and warns on fine meshes).
+Line(5) = {2, 5};  Circle(6) = {5, 1, 7};  Circle(8) = {7, 1, 6};  Line(7) = {6, 4};
 
 Curve Loop(1) = {1, 2, 3, 4};       Plane Surface(1) = {1};  // core
-Curve Loop(2) = {5, 6, 7, -3, -2};  Plane Surface(2) = {2};  // outer (inner side: 2 curves)
+Curve Loop(2) = {5, 6, 8, 7, -3, -2};  Plane Surface(2) = {2};  // outer: inner and outer
+                                                                // sides of 2 curves each
 
 Transfinite Curve{1, 2, 3, 4} = n * refine + 1;
-Transfinite Curve{6} = 2 * n * refine + 1;
+Transfinite Curve{6, 8} = n * refine + 1;
 Transfinite Curve{5, 7} = nr * refine + 1;
 Transfinite Surface{1};
 Transfinite Surface{2} = {2, 5, 6, 4};  // corners: the inner side runs 2 -> 3 -> 4
@@ -51,12 +54,14 @@ Physical Surface("symmetry_x") = Surface In BoundingBox{-e, -e, -e, e, R + e, Lz
 Physical Surface("symmetry_y") = Surface In BoundingBox{-e, -e, -e, R + e, e, Lz + e};
 Physical Surface("bottom") = Surface In BoundingBox{-e, -e, -e, R + e, R + e, e};
 Physical Surface("top") = Surface In BoundingBox{-e, -e, Lz - e, R + e, R + e, Lz + e};
-// The arc: the one surface that reaches x = R and y = R over the whole length.
+// The arc: the lateral surfaces (full length) that reach x = R or y = R, leaving out the faces
+// in the symmetry planes (whose bounding boxes are flat in x or in y).
 Physical Surface("outer") = {};
 all[] = Surface{:};
 For k In {0:#all[] - 1}
   bb[] = BoundingBox Surface{all[k]};  // {xmin, ymin, zmin, xmax, ymax, zmax}
-  If (bb[3] > R - e && bb[4] > R - e && bb[5] - bb[2] > Lz - e)
+  lateral = bb[5] - bb[2] > Lz - e;
+  If (lateral && (bb[3] > R - e || bb[4] > R - e) && bb[3] > e && bb[4] > e)
     Physical Surface("outer") += {all[k]};
   EndIf
 EndFor

@@ -132,6 +132,7 @@ Conversion convertHexMesh(const HexMesh& mesh) {
     pf.body.resize(n);
     pf.latticeIndex.resize(n);
     std::vector<Index> particleOfHex(n, -1);
+    out.elementOfParticle.resize(n);
     std::vector<char> filled(n, 0);
     ConversionStats& stats = out.stats;
     stats.hexes = n;
@@ -171,6 +172,7 @@ Conversion convertHexMesh(const HexMesh& mesh) {
                         pf.space[a] = static_cast<Index>(s);
                         pf.body[a] = space.body;
                         particleOfHex[h] = static_cast<Index>(a);
+                        out.elementOfParticle[a] = mesh.hexTags[h];
                         const auto edges = edgeLengthRange(x);
                         stats.minEdge = std::min(stats.minEdge, edges[0]);
                         stats.maxEdge = std::max(stats.maxEdge, edges[1]);

@@ -4,7 +4,11 @@
 #include <gmsh.h>
 #include <omp.h>
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
+#include <fstream>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -18,16 +22,16 @@ namespace {
 constexpr int kHex8 = 5;   // gmsh element type: 8-node hexahedron
 constexpr int kQuad4 = 3;  // gmsh element type: 4-node quadrangle
 
-/// One gmsh session: initialise with command-line style arguments, finalise on scope exit and
-/// restore OpenMP's thread count (toolchain.md: gmsh::initialize sets it to 1).
+/// One gmsh session: initialise, finalise on scope exit and restore OpenMP's thread count
+/// (toolchain.md: gmsh::initialize sets it to 1). ONELAB parameters survive gmsh::finalize in
+/// gmsh 4.8 and would leak DefineConstant values from one .geo into the next: they are cleared.
 class GmshSession {
   public:
-    explicit GmshSession(std::vector<std::string> args) : threads_(omp_get_max_threads()) {
-        std::vector<char*> argv;
-        for (std::string& a : args) argv.push_back(a.data());
+    GmshSession() : threads_(omp_get_max_threads()) {
         try {
-            gmsh::initialize(static_cast<int>(argv.size()), argv.data(), false);
+            gmsh::initialize(0, nullptr, false);
             gmsh::option::setNumber("General.Terminal", 0);
+            gmsh::onelab::clear();
             gmsh::logger::start();
         } catch (...) {
             omp_set_num_threads(threads_);
@@ -47,6 +51,49 @@ class GmshSession {
 
   private:
     int threads_;
+};
+
+/// A .geo opened with parameters is opened through a temporary wrapper that defines them and
+/// then includes it. (gmsh's `-setnumber`, passed to gmsh::initialize, would do the same for one
+/// file, but gmsh 4.8 keeps command-line numbers for the rest of the process.) DefineConstant
+/// leaves an already defined name alone, so the wrapper's values override its defaults;
+/// messages and relative paths inside the .geo still refer to the .geo itself.
+class ParameterWrapper {
+  public:
+    ParameterWrapper(const std::filesystem::path& input,
+                     const std::vector<std::pair<std::string, double>>& parameters)
+        : path_(input) {
+        if (parameters.empty()) return;
+        static std::atomic<int> counter{0};
+        path_ = std::filesystem::temp_directory_path() /
+                ("gsph-preproc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".geo");
+        std::ofstream out(path_);
+        for (const auto& [name, value] : parameters) {
+            const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                               std::all_of(name.begin(), name.end(), [](unsigned char c) {
+                                   return std::isalnum(c) || c == '_';
+                               });
+            if (!valid) throw InputError(input.string() + ": '" + name + "' is not a parameter name");
+            char text[64];
+            std::snprintf(text, sizeof text, "%.17g", value);
+            out << name << " = " << text << ";\n";
+        }
+        out << "Include \"" << std::filesystem::absolute(input).string() << "\";\n";
+        out.close();
+        if (!out) throw IoError(path_.string() + ": cannot write a temporary file");
+        owned_ = true;
+    }
+    ~ParameterWrapper() {
+        std::error_code ec;
+        if (owned_) std::filesystem::remove(path_, ec);
+    }
+    ParameterWrapper(const ParameterWrapper&) = delete;
+    ParameterWrapper& operator=(const ParameterWrapper&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+    bool owned_ = false;
 };
 
 std::string oneLine(std::string s) {
@@ -217,15 +264,10 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
         throw InputError(source + ": parameters (--set) apply to .geo files only");
     }
 
-    std::vector<std::string> args = {"gsph-preproc"};
-    for (const auto& [name, value] : options.parameters) {
-        char text[64];
-        std::snprintf(text, sizeof text, "%.17g", value);
-        args.insert(args.end(), {"-setnumber", name, text});
-    }
-    GmshSession session(args);
+    const ParameterWrapper wrapper(input, options.parameters);
+    GmshSession session;
     try {
-        gmsh::open(source);
+        gmsh::open(wrapper.path().string());
     } catch (const std::string& e) {
         throw InputError(source + ": gmsh cannot read it: " + gmshReason(e));
     }

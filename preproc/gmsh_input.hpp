@@ -4,8 +4,9 @@
 // call for all nodes, one per volume or surface for its elements; never one call per element).
 //
 // Contract: gmsh is initialised and finalised inside readHexMesh and leaves no state behind
-// (OpenMP's thread count, which gmsh::initialize sets to 1, is restored; user gmshrc files are
-// not read, so the result does not depend on the machine). gmsh's messages are captured, not
+// (OpenMP's thread count, which gmsh::initialize sets to 1, is restored; ONELAB parameters are
+// cleared; user gmshrc files are not read, so the result does not depend on the machine), so
+// repeated calls in one process are independent. gmsh's messages are captured, not
 // printed; its warnings are returned. Errors: InputError for a missing, unsupported or
 // unreadable file (a .geo syntax error included), MeshError for a mesh that is not made of
 // 8-node hexahedra or whose surface groups are not quadrilateral. Every message starts with the
@@ -22,8 +23,9 @@
 namespace gsph::preproc {
 
 struct MeshReadOptions {
-    /// .geo parameters set before parsing, as gmsh's `-setnumber NAME VALUE` (they override
-    /// DefineConstant defaults). Not allowed with a .msh.
+    /// .geo parameters defined before parsing, like gmsh's `-setnumber NAME VALUE`: they
+    /// override DefineConstant defaults (a plain assignment in the .geo still wins). Not
+    /// allowed with a .msh.
     std::vector<std::pair<std::string, double>> parameters;
 };
 
