@@ -1,0 +1,303 @@
+// SPDX-License-Identifier: MIT
+#include "io/particle_file.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace gsph {
+
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+static_assert(sizeof(std::array<Index, 3>) == 3 * sizeof(Index), "index triples must be packed");
+
+void invalid(const std::string& what) {
+    throw InputError("invalid particle data: " + what);
+}
+
+bool validSetName(const std::string& name) {
+    return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos;
+}
+
+void validateSpaces(const ParticleFile& f) {
+    for (std::size_t s = 0; s < f.spaces.size(); ++s) {
+        const LatticeSpace& sp = f.spaces[s];
+        if (!(sp.dtheta > 0.0) || !std::isfinite(sp.dtheta)) {
+            invalid("space " + std::to_string(s) + " has a non-positive dtheta");
+        }
+        for (int c : sp.cells) {
+            if (c < 1) invalid("space " + std::to_string(s) + " has an empty cell range");
+        }
+    }
+}
+
+void validateOrdering(const ParticleFile& f) {
+    const auto n = static_cast<std::size_t>(f.size());
+    const auto spaces = static_cast<Index>(f.spaces.size());
+    const auto bodies = static_cast<Index>(f.bodies.size());
+    std::vector<Index> bodyOfSpace(f.spaces.size(), -1);
+    for (std::size_t a = 0; a < n; ++a) {
+        const Index s = f.space[a], b = f.body[a];
+        if (s < 0 || s >= spaces) invalid("particle " + std::to_string(a) + ": bad space id");
+        if (b < 0 || b >= bodies) invalid("particle " + std::to_string(a) + ": bad body id");
+        if (bodyOfSpace[s] == -1) bodyOfSpace[s] = b;
+        if (bodyOfSpace[s] != b) invalid("space " + std::to_string(s) + " spans two bodies");
+        if (a > 0) {
+            const Index sp = f.space[a - 1], bp = f.body[a - 1];
+            if (b < bp || (b == bp && s < sp)) {
+                invalid("particles are not sorted by body, then space (at " + std::to_string(a) +
+                        ")");
+            }
+        }
+        if (!(f.volume[a] > 0.0) || !std::isfinite(f.volume[a])) {
+            invalid("particle " + std::to_string(a) + " has a non-positive volume");
+        }
+        if (!f.X[a].allFinite() || !f.theta[a].allFinite()) {
+            invalid("particle " + std::to_string(a) + " has a non-finite position");
+        }
+        if (!f.latticeIndex.empty()) {
+            const auto& cells = f.spaces[static_cast<std::size_t>(s)].cells;
+            for (int d = 0; d < 3; ++d) {
+                const Index i = f.latticeIndex[a][static_cast<std::size_t>(d)];
+                if (i < 0 || i >= cells[static_cast<std::size_t>(d)]) {
+                    invalid("particle " + std::to_string(a) + " lies outside its space's cells");
+                }
+            }
+        }
+    }
+}
+
+}  // namespace
+
+void validateParticleFile(const ParticleFile& f) {
+    const auto n = static_cast<std::size_t>(f.size());
+    if (f.theta.size() != n || f.volume.size() != n || f.space.size() != n || f.body.size() != n) {
+        invalid("per-particle arrays differ in length");
+    }
+    if (!f.latticeIndex.empty() && f.latticeIndex.size() != n) {
+        invalid("lattice_index has the wrong length");
+    }
+    validateSpaces(f);
+    validateOrdering(f);
+    for (const auto& [name, members] : f.sets) {
+        if (!validSetName(name)) invalid("set name '" + name + "' is not a valid HDF5 name");
+        for (std::size_t k = 0; k < members.size(); ++k) {
+            if (members[k] < 0 || static_cast<std::size_t>(members[k]) >= n) {
+                invalid("set '" + name + "' holds an index out of range");
+            }
+            if (k > 0 && members[k] <= members[k - 1]) {
+                invalid("set '" + name + "' is not sorted and unique");
+            }
+        }
+    }
+}
+
+void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f) {
+    validateParticleFile(f);
+    writeAtomically(path, [&](const std::filesystem::path& temp) {
+        h5::File h5(temp, h5::File::Mode::Create);
+        const std::size_t n = f.X.size();
+        h5.setAttribute("/", "format", std::string(kParticleFormat));
+        h5.setAttribute(
+            "/", "format_version",
+            std::to_string(kParticleFormatMajor) + "." + std::to_string(kParticleFormatMinor));
+        writeProvenance(h5, f.provenance);
+
+        h5.write("/particles/X", f.X.empty() ? nullptr : f.X.front().data(), {n, 3});
+        h5.setAttribute("/particles/X", "units", std::string("m"));
+        h5.write("/particles/theta", f.theta.empty() ? nullptr : f.theta.front().data(), {n, 3});
+        h5.setAttribute("/particles/theta", "units", std::string("1"));
+        h5.write("/particles/volume", f.volume.data(), {n});
+        h5.setAttribute("/particles/volume", "units", std::string("m^3"));
+        h5.write("/particles/space", f.space.data(), {n});
+        h5.write("/particles/body", f.body.data(), {n});
+        if (!f.latticeIndex.empty()) {
+            h5.write("/particles/lattice_index", f.latticeIndex.front().data(), {n, 3});
+        }
+
+        const std::size_t spaces = f.spaces.size();
+        std::vector<std::int32_t> cells;
+        std::vector<std::int8_t> periodic;
+        std::vector<double> dtheta;
+        for (const LatticeSpace& s : f.spaces) {
+            for (int d = 0; d < 3; ++d) {
+                cells.push_back(s.cells[static_cast<std::size_t>(d)]);
+                periodic.push_back(s.periodic[static_cast<std::size_t>(d)] ? 1 : 0);
+            }
+            dtheta.push_back(s.dtheta);
+        }
+        h5.write("/spaces/cells", cells.data(), {spaces, 3});
+        h5.write("/spaces/periodic", periodic.data(), {spaces, 3});
+        h5.write("/spaces/dtheta", dtheta.data(), {spaces});
+
+        std::vector<std::string> names;
+        std::vector<std::int32_t> tags;
+        for (const BodyInfo& b : f.bodies) {
+            names.push_back(b.name);
+            tags.push_back(b.sourceTag);
+        }
+        h5.writeStrings("/bodies/name", names);
+        h5.write("/bodies/source_tag", tags.data(), {tags.size()});
+
+        h5.createGroup("/sets");
+        for (const auto& [name, members] : f.sets) {
+            h5.write("/sets/" + name, members.data(), {members.size()});
+        }
+    });
+}
+
+namespace {
+
+/// Checks that a dataset has shape {n} (cols == 0) or {n, cols}; returns n.
+std::size_t expectShape(const h5::File& h5, const std::string& path,
+                        const std::vector<std::size_t>& dims, std::size_t cols) {
+    const bool ok = cols == 0 ? dims.size() == 1 : (dims.size() == 2 && dims[1] == cols);
+    if (!ok) {
+        throw IoError(h5.name() + ": dataset " + path + " has the wrong shape (expected " +
+                      (cols == 0 ? std::string("N") : "N×" + std::to_string(cols)) + ")");
+    }
+    return dims[0];
+}
+
+std::vector<Vec3> readVec3(const h5::File& h5, const std::string& path, std::size_t n) {
+    std::vector<std::size_t> dims;
+    const std::vector<double> flat = h5.read<double>(path, dims);
+    if (expectShape(h5, path, dims, 3) != n) {
+        throw IoError(h5.name() + ": dataset " + path + " has the wrong length");
+    }
+    std::vector<Vec3> out(n);
+    for (std::size_t a = 0; a < n; ++a)
+        out[a] = Vec3(flat[3 * a], flat[3 * a + 1], flat[3 * a + 2]);
+    return out;
+}
+
+template <class T>
+std::vector<T> readColumn(const h5::File& h5, const std::string& path, std::size_t n) {
+    std::vector<std::size_t> dims;
+    std::vector<T> values = h5.read<T>(path, dims);
+    if (expectShape(h5, path, dims, 0) != n) {
+        throw IoError(h5.name() + ": dataset " + path + " has the wrong length");
+    }
+    return values;
+}
+
+void checkFormat(const h5::File& h5) {
+    if (!h5.hasAttribute("/", "format") || h5.stringAttribute("/", "format") != kParticleFormat) {
+        throw IoError(h5.name() + ": not a " + std::string(kParticleFormat) +
+                      " file (root attribute 'format' missing or different)");
+    }
+    const std::string version = h5.stringAttribute("/", "format_version");
+    const std::size_t dot = version.find('.');
+    const std::string major = version.substr(0, dot);
+    if (major != std::to_string(kParticleFormatMajor)) {
+        throw IoError(h5.name() + ": format version " + version +
+                      " is not supported (this build "
+                      "reads " +
+                      std::to_string(kParticleFormatMajor) + ".x)");
+    }
+}
+
+}  // namespace
+
+ParticleFile readParticleFile(const std::filesystem::path& path) {
+    h5::File h5(path, h5::File::Mode::ReadOnly);
+    checkFormat(h5);
+    ParticleFile f;
+    f.provenance = readProvenance(h5);
+
+    std::vector<std::size_t> dims;
+    f.volume = h5.read<double>("/particles/volume", dims);
+    const std::size_t n = expectShape(h5, "/particles/volume", dims, 0);
+    f.X = readVec3(h5, "/particles/X", n);
+    f.theta = readVec3(h5, "/particles/theta", n);
+    f.space = readColumn<std::int32_t>(h5, "/particles/space", n);
+    f.body = readColumn<std::int32_t>(h5, "/particles/body", n);
+    if (h5.exists("/particles/lattice_index")) {
+        const std::vector<std::int32_t> flat =
+            h5.read<std::int32_t>("/particles/lattice_index", dims);
+        if (expectShape(h5, "/particles/lattice_index", dims, 3) != n) {
+            throw IoError(h5.name() + ": dataset /particles/lattice_index has the wrong length");
+        }
+        f.latticeIndex.resize(n);
+        for (std::size_t a = 0; a < n; ++a) {
+            f.latticeIndex[a] = {flat[3 * a], flat[3 * a + 1], flat[3 * a + 2]};
+        }
+    }
+
+    const std::vector<double> dtheta = h5.read<double>("/spaces/dtheta", dims);
+    const std::size_t spaces = expectShape(h5, "/spaces/dtheta", dims, 0);
+    const std::vector<std::int32_t> cells = h5.read<std::int32_t>("/spaces/cells", dims);
+    if (expectShape(h5, "/spaces/cells", dims, 3) != spaces) {
+        throw IoError(h5.name() + ": /spaces/cells and /spaces/dtheta differ in length");
+    }
+    const std::vector<std::int8_t> periodic = h5.read<std::int8_t>("/spaces/periodic", dims);
+    if (expectShape(h5, "/spaces/periodic", dims, 3) != spaces) {
+        throw IoError(h5.name() + ": /spaces/periodic and /spaces/dtheta differ in length");
+    }
+    f.spaces.resize(spaces);
+    for (std::size_t s = 0; s < spaces; ++s) {
+        f.spaces[s].dtheta = dtheta[s];
+        for (std::size_t d = 0; d < 3; ++d) {
+            f.spaces[s].cells[d] = cells[3 * s + d];
+            f.spaces[s].periodic[d] = periodic[3 * s + d] != 0;
+        }
+    }
+
+    const std::vector<std::string> names = h5.readStrings("/bodies/name");
+    const std::vector<std::int32_t> tags =
+        readColumn<std::int32_t>(h5, "/bodies/source_tag", names.size());
+    for (std::size_t b = 0; b < names.size(); ++b) f.bodies.push_back({names[b], tags[b]});
+
+    if (h5.exists("/sets")) {
+        for (const std::string& name : h5.members("/sets")) {
+            std::vector<std::int32_t> members = h5.read<std::int32_t>("/sets/" + name, dims);
+            if (dims.size() != 1) {
+                throw IoError(h5.name() + ": set /sets/" + name + " is not one-dimensional");
+            }
+            f.sets.emplace(name, std::move(members));
+        }
+    }
+
+    try {
+        validateParticleFile(f);
+    } catch (const InputError& e) {
+        throw IoError(h5.name() + ": " + e.what());
+    }
+    return f;
+}
+
+Reference buildReference(const ParticleFile& f, std::span<const double> densityPerBody,
+                         double kappa) {
+    if (!(kappa > 0.0) || !std::isfinite(kappa)) {
+        throw InputError("kappa must be positive (got " + std::to_string(kappa) + ")");
+    }
+    if (densityPerBody.size() < f.bodies.size()) {
+        throw InputError("a density is needed for each of the " + std::to_string(f.bodies.size()) +
+                         " bodies (got " + std::to_string(densityPerBody.size()) + ")");
+    }
+    for (std::size_t b = 0; b < f.bodies.size(); ++b) {
+        if (!(densityPerBody[b] > 0.0) || !std::isfinite(densityPerBody[b])) {
+            throw InputError("density of body " + std::to_string(b) + " must be positive");
+        }
+    }
+    Reference ref;
+    ref.dim = Dimension{3};
+    ref.kappa = kappa;
+    ref.spaces = f.spaces;
+    ref.X = f.X;
+    ref.theta = f.theta;
+    ref.volume = f.volume;
+    ref.body = f.body;
+    ref.space = f.space;
+    ref.mass.resize(f.volume.size());
+    for (std::size_t a = 0; a < f.volume.size(); ++a) {
+        ref.mass[a] = densityPerBody[static_cast<std::size_t>(f.body[a])] * f.volume[a];
+    }
+    return ref;
+}
+
+}  // namespace gsph

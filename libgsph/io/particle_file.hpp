@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: MIT
+// The particle file (DESIGN §1, §2): what gsph-preproc writes and gsph-solve reads. HDF5,
+// format "gsph-particles" 1.0, layout in docs/formats.md.
+//
+// Invariants (checked by validateParticleFile, on write and on read):
+//   * every per-particle array has N entries (latticeIndex: N or none);
+//   * particles are sorted by body, then by space: bodies and spaces are contiguous ranges, and
+//     each space belongs to one body;
+//   * space ids index `spaces`, body ids index `bodies`, set entries are sorted particle indices;
+//   * volumes are positive; lattice indices lie inside their space's cells.
+// Ownership: plain values; writeParticleFile writes atomically (io/atomic_file.hpp).
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <map>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "core/types.hpp"
+#include "io/provenance.hpp"
+#include "particles/reference.hpp"
+
+namespace gsph {
+
+inline constexpr const char* kParticleFormat = "gsph-particles";
+inline constexpr int kParticleFormatMajor = 1;  ///< readers reject another major version
+inline constexpr int kParticleFormatMinor = 0;  ///< additions that old readers may ignore
+
+/// One body: a gmsh physical volume group (or the whole mesh when there is none).
+struct BodyInfo {
+    std::string name;      ///< the group's name; empty if it has none
+    Index sourceTag = -1;  ///< the group's tag in the source mesh; -1 if none
+};
+
+struct ParticleFile {
+    // Per particle (N entries), sorted by body then space; lattice order within a space.
+    std::vector<Vec3> X;                             ///< reference position [m]
+    std::vector<Vec3> theta;                         ///< coordinates in the home space [θ units]
+    std::vector<double> volume;                      ///< exact cell volume [m³]
+    std::vector<Index> space;                        ///< home space id
+    std::vector<Index> body;                         ///< body id
+    std::vector<std::array<Index, 3>> latticeIndex;  ///< (i,j,k) in the home space; optional
+
+    std::vector<LatticeSpace> spaces;                ///< per space: cells, periodic flags, Δθ
+    std::vector<BodyInfo> bodies;                    ///< per body id
+    std::map<std::string, std::vector<Index>> sets;  ///< named particle sets (sorted indices)
+    Provenance provenance;
+
+    Index size() const { return static_cast<Index>(X.size()); }
+};
+
+/// Throws InputError naming the first violated invariant (see the header comment).
+void validateParticleFile(const ParticleFile& file);
+
+/// Writes `file` to `path` atomically (temporary name + rename). Throws InputError if the
+/// content is invalid, IoError if writing fails; nothing is left behind on failure.
+void writeParticleFile(const std::filesystem::path& path, const ParticleFile& file);
+
+/// Reads and validates a particle file. Throws IoError naming the file if it is missing, not a
+/// gsph-particles file, of an unsupported major version, or inconsistent.
+ParticleFile readParticleFile(const std::filesystem::path& path);
+
+/// The reference configuration of a run from a particle file: X, θ, volume, body, space,
+/// spaces, dim = 3, κ, and mass = ρ0(body)·volume. Derived fields (pairs, metrics) stay empty.
+/// @param[in] densityPerBody ρ0 [kg/m³] indexed by body id; needs one entry per body.
+/// @param[in] kappa h = κΔθ (DESIGN §3).
+/// Throws InputError if a density is missing or not positive, or κ is not positive.
+Reference buildReference(const ParticleFile& file, std::span<const double> densityPerBody,
+                         double kappa);
+
+}  // namespace gsph

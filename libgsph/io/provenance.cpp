@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: MIT
+#include "io/provenance.hpp"
+
+#include "io/sha256.hpp"
+
+namespace gsph {
+
+Provenance provenanceOf(const std::string& tool, const std::string& toolVersion,
+                        const std::filesystem::path& source, const std::string& parameters) {
+    Provenance p;
+    p.tool = tool;
+    p.toolVersion = toolVersion;
+    p.sourceFile = source.string();
+    p.sourceSha256 = sha256File(source);
+    p.parameters = parameters;
+    return p;
+}
+
+void writeProvenance(h5::File& file, const Provenance& p) {
+    file.setAttribute("/", "tool", p.tool);
+    file.setAttribute("/", "tool_version", p.toolVersion);
+    file.setAttribute("/", "source_file", p.sourceFile);
+    file.setAttribute("/", "source_sha256", p.sourceSha256);
+    file.setAttribute("/", "source_parameters", p.parameters);
+    file.setAttribute("/", "units", p.units);
+}
+
+Provenance readProvenance(const h5::File& file) {
+    auto get = [&](const char* name) {
+        return file.hasAttribute("/", name) ? file.stringAttribute("/", name) : std::string();
+    };
+    Provenance p;
+    p.tool = get("tool");
+    p.toolVersion = get("tool_version");
+    p.sourceFile = get("source_file");
+    p.sourceSha256 = get("source_sha256");
+    p.parameters = get("source_parameters");
+    p.units = get("units");
+    return p;
+}
+
+}  // namespace gsph

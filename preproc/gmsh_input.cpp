@@ -1,0 +1,305 @@
+// SPDX-License-Identifier: MIT
+#include "gmsh_input.hpp"
+
+#include <gmsh.h>
+#include <omp.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <fstream>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+#include "core/error.hpp"
+
+namespace gsph::preproc {
+
+namespace {
+
+constexpr int kHex8 = 5;   // gmsh element type: 8-node hexahedron
+constexpr int kQuad4 = 3;  // gmsh element type: 4-node quadrangle
+
+/// One gmsh session: initialise, finalise on scope exit and restore OpenMP's thread count
+/// (toolchain.md: gmsh::initialize sets it to 1). ONELAB parameters survive gmsh::finalize in
+/// gmsh 4.8 and would leak DefineConstant values from one .geo into the next: they are cleared.
+class GmshSession {
+  public:
+    GmshSession() : threads_(omp_get_max_threads()) {
+        try {
+            gmsh::initialize(0, nullptr, false);
+            gmsh::option::setNumber("General.Terminal", 0);
+            gmsh::onelab::clear();
+            gmsh::logger::start();
+        } catch (...) {
+            omp_set_num_threads(threads_);
+            throw;
+        }
+    }
+    ~GmshSession() {
+        try {
+            gmsh::logger::stop();
+            gmsh::finalize();
+        } catch (...) {  // nothing useful can be done while unwinding
+        }
+        omp_set_num_threads(threads_);
+    }
+    GmshSession(const GmshSession&) = delete;
+    GmshSession& operator=(const GmshSession&) = delete;
+
+  private:
+    int threads_;
+};
+
+/// A .geo opened with parameters is opened through a temporary wrapper that defines them and
+/// then includes it. (gmsh's `-setnumber`, passed to gmsh::initialize, would do the same for one
+/// file, but gmsh 4.8 keeps command-line numbers for the rest of the process.) DefineConstant
+/// leaves an already defined name alone, so the wrapper's values override its defaults;
+/// messages and relative paths inside the .geo still refer to the .geo itself.
+class ParameterWrapper {
+  public:
+    ParameterWrapper(const std::filesystem::path& input,
+                     const std::vector<std::pair<std::string, double>>& parameters)
+        : path_(input) {
+        if (parameters.empty()) return;
+        static std::atomic<int> counter{0};
+        path_ = std::filesystem::temp_directory_path() /
+                ("gsph-preproc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".geo");
+        std::ofstream out(path_);
+        for (const auto& [name, value] : parameters) {
+            const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                               std::all_of(name.begin(), name.end(), [](unsigned char c) {
+                                   return std::isalnum(c) || c == '_';
+                               });
+            if (!valid) throw InputError(input.string() + ": '" + name + "' is not a parameter name");
+            char text[64];
+            std::snprintf(text, sizeof text, "%.17g", value);
+            out << name << " = " << text << ";\n";
+        }
+        out << "Include \"" << std::filesystem::absolute(input).string() << "\";\n";
+        out.close();
+        if (!out) throw IoError(path_.string() + ": cannot write a temporary file");
+        owned_ = true;
+    }
+    ~ParameterWrapper() {
+        std::error_code ec;
+        if (owned_) std::filesystem::remove(path_, ec);
+    }
+    ParameterWrapper(const ParameterWrapper&) = delete;
+    ParameterWrapper& operator=(const ParameterWrapper&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+
+  private:
+    std::filesystem::path path_;
+    bool owned_ = false;
+};
+
+std::string oneLine(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    return s;
+}
+
+/// gmsh's reason for a failure: the exception text, else its last logged error.
+std::string gmshReason(const std::string& thrown) {
+    if (!thrown.empty()) return oneLine(thrown);
+    std::string last;
+    gmsh::logger::getLastError(last);
+    return last.empty() ? std::string("unknown gmsh error") : oneLine(last);
+}
+
+void collectWarnings(std::vector<std::string>& warnings) {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    const std::string prefix = "Warning: ";
+    for (const std::string& line : log) {
+        if (line.rfind(prefix, 0) == 0) warnings.push_back("gmsh: " + oneLine(line.substr(prefix.size())));
+    }
+}
+
+std::string elementName(int type) {
+    std::string name;
+    int dim = 0, order = 0, nodes = 0, primary = 0;
+    std::vector<double> local;
+    gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
+    return name;
+}
+
+/// Node tag → dense node id (ids in ascending tag order).
+class NodeIds {
+  public:
+    NodeIds(const std::vector<std::size_t>& tags, const std::vector<double>& coords,
+            std::vector<Vec3>& nodes) {
+        std::vector<std::size_t> order(tags.size());
+        std::iota(order.begin(), order.end(), std::size_t{0});
+        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+        nodes.resize(tags.size());
+        const std::size_t maxTag = tags.empty() ? 0 : tags[order.back()];
+        dense_ = maxTag <= 2 * tags.size() + 1024;
+        if (dense_) denseIds_.assign(maxTag + 1, -1);
+        for (std::size_t id = 0; id < order.size(); ++id) {
+            const std::size_t p = order[id];
+            nodes[id] = Vec3(coords[3 * p], coords[3 * p + 1], coords[3 * p + 2]);
+            if (dense_) {
+                denseIds_[tags[p]] = static_cast<Index>(id);
+            } else {
+                sparseIds_[tags[p]] = static_cast<Index>(id);
+            }
+        }
+    }
+    /// -1 if the tag is unknown.
+    Index operator()(std::size_t tag) const {
+        if (dense_) return tag < denseIds_.size() ? denseIds_[tag] : -1;
+        const auto it = sparseIds_.find(tag);
+        return it == sparseIds_.end() ? -1 : it->second;
+    }
+
+  private:
+    bool dense_ = true;
+    std::vector<Index> denseIds_;
+    std::unordered_map<std::size_t, Index> sparseIds_;
+};
+
+template <std::size_t N>
+void appendElements(const std::string& source, const std::vector<std::size_t>& nodeTags,
+                    const NodeIds& ids, std::vector<std::array<Index, N>>& out) {
+    for (std::size_t e = 0; e + N <= nodeTags.size(); e += N) {
+        std::array<Index, N> element{};
+        for (std::size_t k = 0; k < N; ++k) {
+            element[k] = ids(nodeTags[e + k]);
+            if (element[k] < 0) {
+                throw MeshError(source + ": an element refers to node " + std::to_string(nodeTags[e + k]) +
+                                ", which does not exist");
+            }
+        }
+        out.push_back(element);
+    }
+}
+
+void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
+    gmsh::vectorpair entities;
+    gmsh::model::getEntities(entities, 3);
+    std::sort(entities.begin(), entities.end());
+    for (const auto& [dim, tag] : entities) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+        gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
+        std::string others;
+        std::size_t hexes = 0;
+        for (std::size_t t = 0; t < types.size(); ++t) {
+            if (types[t] == kHex8) {
+                hexes = elementTags[t].size();
+                continue;
+            }
+            others += (others.empty() ? "" : ", ") + std::to_string(elementTags[t].size()) + " × " +
+                      elementName(types[t]);
+        }
+        if (!others.empty()) {
+            throw MeshError(source + ": volume " + std::to_string(tag) + " holds " + others +
+                            (hexes > 0 ? " besides " + std::to_string(hexes) + " hexahedra" : "") +
+                            "; gsph-preproc needs structured blocks of 8-node hexahedra "
+                            "(Transfinite Volume + Recombine)");
+        }
+        if (hexes == 0) continue;
+        HexVolume volume{tag, static_cast<Index>(mesh.hexes.size()), static_cast<Index>(hexes)};
+        const std::size_t at = std::find(types.begin(), types.end(), kHex8) - types.begin();
+        appendElements<8>(source, nodeTags[at], ids, mesh.hexes);
+        mesh.hexTags.insert(mesh.hexTags.end(), elementTags[at].begin(), elementTags[at].end());
+        mesh.volumes.push_back(volume);
+    }
+}
+
+void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
+                std::vector<std::string>& warnings) {
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups);
+    std::sort(groups.begin(), groups.end());
+    for (const auto& [dim, tag] : groups) {
+        std::string name;
+        gmsh::model::getPhysicalName(dim, tag, name);
+        std::vector<int> entities;
+        gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+        const std::string label = name.empty() ? "(tag " + std::to_string(tag) + ")" : "'" + name + "'";
+        if (dim == 3) {
+            mesh.volumeGroups.push_back({tag, name, entities});
+        } else if (dim == 2) {
+            SurfaceGroup group{tag, name, {}};
+            for (int surface : entities) {
+                std::vector<int> types;
+                std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+                gmsh::model::mesh::getElements(types, elementTags, nodeTags, 2, surface);
+                for (std::size_t t = 0; t < types.size(); ++t) {
+                    if (types[t] != kQuad4) {
+                        throw MeshError(source + ": physical surface " + label + " (surface " +
+                                        std::to_string(surface) + ") holds " + elementName(types[t]) +
+                                        " elements; particle sets need 4-node quadrangles "
+                                        "(Recombine Surface)");
+                    }
+                    appendElements<4>(source, nodeTags[t], ids, group.quads);
+                }
+            }
+            mesh.surfaceGroups.push_back(std::move(group));
+        } else {
+            warnings.push_back("physical " + std::string(dim == 1 ? "curve " : "point ") + label +
+                               " is ignored (volume groups are bodies, surface groups are sets)");
+        }
+    }
+}
+
+}  // namespace
+
+HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& options,
+                    std::vector<std::string>& warnings) {
+    const std::string source = input.string();
+    std::error_code ec;
+    if (!std::filesystem::exists(input, ec)) throw InputError(source + ": no such file");
+    if (!std::filesystem::is_regular_file(input, ec)) throw InputError(source + ": not a file");
+    std::string ext = input.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    if (ext != ".geo" && ext != ".msh") {
+        throw InputError(source + ": unsupported input '" + ext + "' (expected a .geo or .msh file)");
+    }
+    if (ext == ".msh" && !options.parameters.empty()) {
+        throw InputError(source + ": parameters (--set) apply to .geo files only");
+    }
+
+    const ParameterWrapper wrapper(input, options.parameters);
+    GmshSession session;
+    try {
+        gmsh::open(wrapper.path().string());
+    } catch (const std::string& e) {
+        throw InputError(source + ": gmsh cannot read it: " + gmshReason(e));
+    }
+    if (ext == ".geo") {
+        try {
+            gmsh::model::mesh::generate(3);
+        } catch (const std::string& e) {
+            throw MeshError(source + ": gmsh cannot mesh it: " + gmshReason(e));
+        }
+    }
+    collectWarnings(warnings);
+
+    HexMesh mesh;
+    mesh.source = source;
+    try {
+        std::vector<std::size_t> tags;
+        std::vector<double> coords, parametric;
+        gmsh::model::mesh::getNodes(tags, coords, parametric, -1, -1, false, false);
+        const NodeIds ids(tags, coords, mesh.nodes);
+        tags = {};
+        coords = {};
+        readVolumes(source, ids, mesh);
+        readGroups(source, ids, mesh, warnings);
+    } catch (const std::string& e) {
+        throw MeshError(source + ": gmsh: " + gmshReason(e));
+    }
+    if (mesh.hexes.empty()) {
+        throw MeshError(source + ": the mesh has no hexahedra (no 3-D elements" +
+                        std::string(ext == ".geo" ? " after meshing: does the file define volumes?)"
+                                                  : "; was it meshed in 3-D, gmsh -3?)"));
+    }
+    return mesh;
+}
+
+}  // namespace gsph::preproc

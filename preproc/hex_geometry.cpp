@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+#include "hex_geometry.hpp"
+
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+namespace gsph::preproc {
+
+Vec3 hexCentre(const HexCorners& x) {
+    Vec3 sum = Vec3::Zero();
+    for (const Vec3& c : x) sum += c;
+    return sum / 8.0;
+}
+
+Mat3 hexJacobian(const HexCorners& x, const Vec3& xi) {
+    // N_c = Π_a (1 + s_a ξ_a)/2 with s_a = ±1 from bit a of c; ∂N_c/∂ξ_a = s_a/2 Π_{b≠a}(...).
+    Mat3 J = Mat3::Zero();
+    for (int c = 0; c < 8; ++c) {
+        std::array<double, 3> s, f;
+        for (int a = 0; a < 3; ++a) {
+            s[a] = (c >> a & 1) ? 1.0 : -1.0;
+            f[a] = 0.5 * (1.0 + s[a] * xi[a]);
+        }
+        const Vec3 dN(0.5 * s[0] * f[1] * f[2], 0.5 * s[1] * f[0] * f[2], 0.5 * s[2] * f[0] * f[1]);
+        J += x[static_cast<std::size_t>(c)] * dN.transpose();
+    }
+    return J;
+}
+
+double hexVolume(const HexCorners& x) {
+    const double g = 1.0 / std::sqrt(3.0);  // 2-point Gauss–Legendre abscissa, weight 1
+    double volume = 0.0;
+    for (int q = 0; q < 8; ++q) {
+        const Vec3 xi((q & 1) ? g : -g, (q & 2) ? g : -g, (q & 4) ? g : -g);
+        volume += hexJacobian(x, xi).determinant();
+    }
+    return volume;
+}
+
+double minCornerJacobian(const HexCorners& x) {
+    // At corner c, J's columns are the edge vectors to c^1, c^2, c^4 (halved), each negated when
+    // c lies on the + side of that axis: det J = (−1)^popcount(c) det(edges) / 8.
+    double smallest = INFINITY;
+    for (int c = 0; c < 8; ++c) {
+        Mat3 edges;
+        int flips = 0;
+        for (int a = 0; a < 3; ++a) {
+            edges.col(a) = x[static_cast<std::size_t>(c ^ (1 << a))] - x[static_cast<std::size_t>(c)];
+            flips += c >> a & 1;
+        }
+        const double det = (flips % 2 == 0 ? 1.0 : -1.0) * edges.determinant() / 8.0;
+        smallest = std::min(smallest, det);
+    }
+    return smallest;
+}
+
+std::array<double, 2> edgeLengthRange(const HexCorners& x) {
+    double lo = INFINITY, hi = 0.0;
+    for (int c = 0; c < 8; ++c) {
+        for (int a = 0; a < 3; ++a) {
+            if (c >> a & 1) continue;  // each edge once, from its lower corner
+            const double length =
+                (x[static_cast<std::size_t>(c | (1 << a))] - x[static_cast<std::size_t>(c)]).norm();
+            lo = std::min(lo, length);
+            hi = std::max(hi, length);
+        }
+    }
+    return {lo, hi};
+}
+
+}  // namespace gsph::preproc

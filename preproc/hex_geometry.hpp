@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: MIT
+// Geometry of one trilinear (8-node) hexahedron (DESIGN §2): the isoparametric map
+// X(ξ) = Σ_c N_c(ξ) X_c on ξ ∈ [−1,1]³, its centre, its exact volume and its Jacobian checks.
+//
+// Corners are given in corner-bit order (hex_topology.hpp): X_c with c = di + 2dj + 4dk, so
+// corner c sits at ξ = (2di−1, 2dj−1, 2dk−1). Invariants: hexCentre is X(0,0,0) = the mean of
+// the corners; hexVolume integrates det ∂X/∂ξ with 2×2×2 Gauss points, exact for trilinear maps
+// (det J is at most quadratic in each ξ); a hex is valid when det J > 0 at all 8 corners.
+#pragma once
+
+#include <array>
+
+#include "core/types.hpp"
+
+namespace gsph::preproc {
+
+using HexCorners = std::array<Vec3, 8>;
+
+/// X(ξ = 0): the particle position of DESIGN §2 (the parametric centre of the hex).
+Vec3 hexCentre(const HexCorners& x);
+
+/// ∂X/∂ξ at ξ ∈ [−1,1]³ (columns: derivatives along ξ1, ξ2, ξ3).
+Mat3 hexJacobian(const HexCorners& x, const Vec3& xi);
+
+/// Exact volume of the trilinear hex: Σ over the 2×2×2 Gauss points of det J (weights 1).
+double hexVolume(const HexCorners& x);
+
+/// Smallest det J over the 8 corners (≤ 0: the hex is inverted or degenerate).
+double minCornerJacobian(const HexCorners& x);
+
+/// Shortest and longest of the 12 edges.
+std::array<double, 2> edgeLengthRange(const HexCorners& x);
+
+}  // namespace gsph::preproc

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+#include "summary.hpp"
+
+#include <cstdio>
+#include <vector>
+
+namespace gsph::preproc {
+
+namespace {
+
+std::string format(const char* fmt, auto... args) {
+    char buffer[512];
+    std::snprintf(buffer, sizeof buffer, fmt, args...);
+    return buffer;
+}
+
+std::string join(const std::vector<int>& values) {
+    std::string s;
+    for (int v : values) {
+        if (!s.empty()) s += ',';
+        s += std::to_string(v);
+    }
+    return s;
+}
+
+}  // namespace
+
+void printSummary(std::ostream& out, const std::string& output, const ParticleFile& pf,
+                  const ConversionStats& stats, const Timings& t) {
+    const auto spaces = pf.spaces.size();
+    std::vector<long> perSpace(spaces, 0), perBody(pf.bodies.size(), 0);
+    std::vector<double> bodyVolume(pf.bodies.size(), 0.0);
+    for (Index a = 0; a < pf.size(); ++a) {
+        ++perSpace[pf.space[a]];
+        ++perBody[pf.body[a]];
+        bodyVolume[pf.body[a]] += pf.volume[a];
+    }
+    std::vector<Index> bodyOfSpace(spaces, 0);
+    for (Index a = 0; a < pf.size(); ++a) bodyOfSpace[pf.space[a]] = pf.body[a];
+
+    out << "gsph-preproc " << pf.provenance.toolVersion << ": " << pf.provenance.sourceFile
+        << (pf.provenance.parameters.empty() ? "" : " (" + pf.provenance.parameters + ")")
+        << " -> " << output << "\n";
+    out << format("  particles  %ld in %zu space%s, %zu bod%s, from %zu hexahedra\n",
+                  static_cast<long>(pf.size()), spaces, spaces == 1 ? "" : "s", pf.bodies.size(),
+                  pf.bodies.size() == 1 ? "y" : "ies", stats.hexes);
+    for (std::size_t s = 0; s < spaces; ++s) {
+        const LatticeSpace& sp = pf.spaces[s];
+        std::string periodic;
+        for (int d = 0; d < 3; ++d) {
+            if (sp.periodic[d]) periodic += "ijk"[d];
+        }
+        const std::string cells = format("%dx%dx%d", sp.cells[0], sp.cells[1], sp.cells[2]);
+        out << format("  space %-3zu body %-3d cells %-16s periodic %-4s particles %-9ld gmsh volumes %s\n",
+                      s, bodyOfSpace[s], cells.c_str(), periodic.empty() ? "-" : periodic.c_str(),
+                      perSpace[s], join(stats.spaceVolumes[s]).c_str());
+    }
+    for (std::size_t b = 0; b < pf.bodies.size(); ++b) {
+        const BodyInfo& body = pf.bodies[b];
+        const std::string name = body.name.empty() ? (body.sourceTag < 0 ? "(whole mesh)" : "(unnamed)")
+                                                   : "'" + body.name + "'";
+        out << format("  body %-3zu %-20s particles %-9ld volume %.6e m^3\n", b, name.c_str(),
+                      perBody[b], bodyVolume[b]);
+    }
+    out << format("  spacing    hex edge length from %.4e m to %.4e m\n", stats.minEdge,
+                  stats.maxEdge);
+    if (pf.sets.empty()) {
+        out << "  sets       none\n";
+    } else {
+        std::string sets;
+        for (const auto& [name, members] : pf.sets) {
+            if (!sets.empty()) sets += ", ";
+            sets += format("'%s' %zu", name.c_str(), members.size());
+        }
+        out << "  sets       " << sets << "\n";
+    }
+    out << format("  gluing     %d of %d shared block faces lie inside a space%s\n",
+                  stats.honouredFaces, stats.sharedFaces,
+                  stats.exhaustiveGluing ? "" : " (search stopped early)");
+    out << format("  time       read+mesh %.3f s, convert %.3f s, write %.3f s, total %.3f s\n",
+                  t.read, t.convert, t.write, t.total);
+}
+
+}  // namespace gsph::preproc
