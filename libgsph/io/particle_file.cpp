@@ -293,9 +293,9 @@ Reference buildReference(const ParticleFile& f, std::span<const double> densityP
     ref.volume = f.volume;
     ref.body = f.body;
     ref.space = f.space;
-    ref.mass.resize(f.volume.size());
+    ref.density.resize(f.volume.size());
     for (std::size_t a = 0; a < f.volume.size(); ++a) {
-        ref.mass[a] = densityPerBody[static_cast<std::size_t>(f.body[a])] * f.volume[a];
+        ref.density[a] = densityPerBody[static_cast<std::size_t>(f.body[a])];
     }
     return ref;
 }

@@ -63,7 +63,8 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& fi
 ParticleFile readParticleFile(const std::filesystem::path& path);
 
 /// The reference configuration of a run from a particle file: X, θ, volume, body, space,
-/// spaces, dim = 3, κ, and mass = ρ0(body)·volume. Derived fields (pairs, metrics) stay empty.
+/// spaces, dim = 3, κ, and ρ0 per particle. Derived fields (pairs, metrics, mass) are filled by
+/// buildPairs and computeGeometry (mass = ρ0 ω det M: docs/theory.md).
 /// @param[in] densityPerBody ρ0 [kg/m³] indexed by body id; needs one entry per body.
 /// @param[in] kappa h = κΔθ (DESIGN §3).
 /// Throws InputError if a density is missing or not positive, or κ is not positive.

@@ -206,7 +206,7 @@ TEST(ParticleFile, BuildReference) {
     EXPECT_EQ(ref.spaces.size(), 2u);
     EXPECT_TRUE(ref.spaces[1].periodic[0]);
     for (Index a = 0; a < f.size(); ++a) {
-        EXPECT_NEAR(ref.mass[a], rho[f.body[a]] * f.volume[a], 1e-15 * ref.mass[a]);
+        EXPECT_NEAR(ref.density[a], rho[f.body[a]], 1e-15 * ref.density[a]);
     }
     EXPECT_EQ(ref.body, f.body);
     EXPECT_EQ(ref.space, f.space);
