@@ -1,14 +1,78 @@
 // SPDX-License-Identifier: MIT
-// gsph-solver: see README.md.
+// gsph-solve: runs a case.
+//
+// Usage:   gsph-solve CASE.toml [-o RUNDIR] [--particles FILE] [--threads N]
+// Sample:  gsph-preproc geometries/graded_bar.geo -o run/bar/particles.h5
+//          gsph-solve cases/graded_bar/case.toml -o run/bar
+// Description: reads the case file (docs/case-format.md) and the particle file it names, runs
+// the total Lagrangian GSPH solver, and writes snapshot_NNNNNN.h5, history.csv and run.log in
+// RUNDIR (default: run/<case name>). Errors: one line on stderr, exit code 1.
+#include <omp.h>
+#include <unistd.h>
+
 #include <CLI/CLI.hpp>
+#include <cstdio>
+#include <fstream>
 #include <iostream>
 
+#include "case_config.hpp"
+#include "core/error.hpp"
 #include "core/version.hpp"
+#include "io/atomic_file.hpp"
+#include "run.hpp"
 
 int main(int argc, char** argv) {
-    CLI::App app{"gsph-solver"};
+    CLI::App app{"gsph-solve: total Lagrangian GSPH solver"};
     app.set_version_flag("--version", gsph::kVersion);
+    std::string casePath, runDir, particles;
+    int threads = 0;
+    app.add_option("case", casePath, "case file (TOML)")->required();
+    app.add_option("-o,--output", runDir, "run folder (default: run/<case name>)");
+    app.add_option("--particles", particles,
+                   "particle file, instead of the case's [run] particles");
+    app.add_option("--threads", threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
+        ->check(CLI::Range(1, 1024));
     CLI11_PARSE(app, argc, argv);
-    std::cerr << "gsph-solver: nothing to do yet\n";
-    return 1;
+    if (threads > 0) omp_set_num_threads(threads);
+
+    std::vector<std::string> log;
+    gsph::solver::RunOptions options;
+    try {
+        gsph::solver::CaseConfig config = gsph::solver::readCaseFile(casePath);
+        if (!particles.empty()) config.particles = particles;
+        // Default run folder: run/<name of the case's folder>, or run/<case file stem>.
+        const std::string caseName = config.caseFile.parent_path().filename().string();
+        options.runDir = !runDir.empty() ? std::filesystem::path(runDir)
+                         : caseName.empty() || caseName == "."
+                             ? std::filesystem::path("run") / config.caseFile.stem()
+                             : std::filesystem::path("run") / caseName;
+        options.progress = isatty(STDERR_FILENO) != 0;
+        options.log = [&](const std::string& line) {
+            std::printf("%s\n", line.c_str());
+            log.push_back(line);
+        };
+        options.log("gsph-solve " + std::string(gsph::kVersion) + ": " + casePath + " -> " +
+                    options.runDir.string() + " (" + std::to_string(omp_get_max_threads()) +
+                    " threads)");
+        gsph::solver::runCase(config, options);
+    } catch (const gsph::Error& e) {
+        std::fprintf(stderr, "%sgsph-solve: error: %s\n", options.progress ? "\n" : "", e.what());
+        log.push_back(std::string("error: ") + e.what());
+        if (!options.runDir.empty() && std::filesystem::is_directory(options.runDir)) {
+            try {
+                gsph::writeAtomically(options.runDir / "run.log",
+                                      [&](const std::filesystem::path& temp) {
+                                          std::ofstream out(temp);
+                                          for (const std::string& line : log) out << line << "\n";
+                                      });
+            } catch (const gsph::Error&) {
+            }
+        }
+        return 1;
+    }
+    gsph::writeAtomically(options.runDir / "run.log", [&](const std::filesystem::path& temp) {
+        std::ofstream out(temp);
+        for (const std::string& line : log) out << line << "\n";
+    });
+    return 0;
 }

@@ -1,0 +1,110 @@
+// SPDX-License-Identifier: MIT
+#include "io/snapshot.hpp"
+
+#include <cstdint>
+#include <string>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace gsph {
+namespace {
+
+static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
+static_assert(sizeof(Mat3) == 9 * sizeof(double), "Mat3 must be nine packed doubles");
+
+// Eigen stores column-major; the file is row-major (documented): transpose on the way.
+std::vector<double> rowMajor(const std::vector<Mat3>& m) {
+    std::vector<double> out(9 * m.size());
+    for (std::size_t a = 0; a < m.size(); ++a)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                out[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)] =
+                    m[a](i, j);
+    return out;
+}
+
+std::vector<Mat3> fromRowMajor(const std::vector<double>& d) {
+    std::vector<Mat3> out(d.size() / 9);
+    for (std::size_t a = 0; a < out.size(); ++a)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                out[a](i, j) =
+                    d[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)];
+    return out;
+}
+
+std::vector<Vec3> readVectors(const h5::File& f, const std::string& path, std::size_t n) {
+    std::vector<std::size_t> dims;
+    const std::vector<double> d = f.read<double>(path, dims);
+    if (dims.size() != 2 || dims[0] != n || dims[1] != 3)
+        throw IoError(f.name() + ": " + path + " is not an N×3 array of " + std::to_string(n) +
+                      " rows");
+    std::vector<Vec3> out(n);
+    for (std::size_t a = 0; a < n; ++a) out[a] = Vec3(d[3 * a], d[3 * a + 1], d[3 * a + 2]);
+    return out;
+}
+
+std::vector<Mat3> readTensors(const h5::File& f, const std::string& path, std::size_t n) {
+    std::vector<std::size_t> dims;
+    const std::vector<double> d = f.read<double>(path, dims);
+    if (dims.size() != 2 || dims[0] != n || dims[1] != 9)
+        throw IoError(f.name() + ": " + path + " is not an N×9 array of " + std::to_string(n) +
+                      " rows");
+    return fromRowMajor(d);
+}
+
+}  // namespace
+
+void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,
+                   const Provenance& provenance) {
+    writeAtomically(path, [&](const std::filesystem::path& temp) {
+        h5::File f(temp, h5::File::Mode::Create);
+        f.setAttribute("/", "format", kSnapshotFormat);
+        f.setAttribute("/", "format_version_major", std::int64_t{kSnapshotFormatMajor});
+        f.setAttribute("/", "format_version_minor", std::int64_t{kSnapshotFormatMinor});
+        writeProvenance(f, provenance);
+        const std::size_t n = state.x.size();
+        const double time = state.time;
+        const double step = static_cast<double>(state.step);
+        f.write("/time", &time, {1});
+        f.write("/step", &step, {1});
+        f.write("/particles/X", ref.X.data()->data(), {n, 3});
+        f.write("/particles/x", state.x.data()->data(), {n, 3});
+        f.write("/particles/v", state.v.data()->data(), {n, 3});
+        const std::vector<double> stress = rowMajor(state.cauchy);
+        const std::vector<double> F = rowMajor(state.F);
+        f.write("/particles/stress", stress.data(), {n, 9});
+        f.write("/particles/F", F.data(), {n, 9});
+        f.write("/particles/body", ref.body.data(), {n});
+        f.write("/particles/space", ref.space.data(), {n});
+    });
+}
+
+Snapshot readSnapshot(const std::filesystem::path& path) {
+    if (!std::filesystem::exists(path)) throw IoError(path.string() + ": no such file");
+    h5::File f(path, h5::File::Mode::ReadOnly);
+    if (!f.hasAttribute("/", "format") || f.stringAttribute("/", "format") != kSnapshotFormat)
+        throw IoError(path.string() + ": not a gsph-snapshot file");
+    if (f.integerAttribute("/", "format_version_major") != kSnapshotFormatMajor)
+        throw IoError(path.string() + ": unsupported gsph-snapshot major version");
+    Snapshot s;
+    s.provenance = readProvenance(f);
+    std::vector<std::size_t> dims;
+    s.time = f.read<double>("/time", dims).at(0);
+    s.step = static_cast<long>(f.read<double>("/step", dims).at(0));
+    s.body = f.read<std::int32_t>("/particles/body", dims);
+    const std::size_t n = s.body.size();
+    s.space = f.read<std::int32_t>("/particles/space", dims);
+    if (s.space.size() != n)
+        throw IoError(path.string() + ": /particles/space has the wrong length");
+    s.X = readVectors(f, "/particles/X", n);
+    s.x = readVectors(f, "/particles/x", n);
+    s.v = readVectors(f, "/particles/v", n);
+    s.stress = readTensors(f, "/particles/stress", n);
+    s.F = readTensors(f, "/particles/F", n);
+    return s;
+}
+
+}  // namespace gsph

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
+// HDF5, format "gsph-snapshot" 0.1 (provisional until the solver issue #6 settles it; layout in
+// docs/formats.md). Written atomically (io/atomic_file.hpp).
+//
+//   /time, /step                 (1 element each)
+//   /particles/X, x, v           N×3 reference position, position, velocity
+//   /particles/stress            N×9 Cauchy stress, row-major
+//   /particles/F                 N×9 deformation gradient, row-major
+//   /particles/body, space       N int32
+#pragma once
+
+#include <filesystem>
+#include <vector>
+
+#include "io/provenance.hpp"
+#include "particles/reference.hpp"
+#include "particles/state.hpp"
+
+namespace gsph {
+
+inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
+inline constexpr int kSnapshotFormatMajor = 0;
+inline constexpr int kSnapshotFormatMinor = 1;
+
+/// What a snapshot holds, read back as plain arrays.
+struct Snapshot {
+    double time = 0.0;
+    long step = 0;
+    std::vector<Vec3> X, x, v;
+    std::vector<Mat3> stress, F;
+    std::vector<Index> body, space;
+    Provenance provenance;
+    Index size() const { return static_cast<Index>(x.size()); }
+};
+
+/// Writes the state of a run. Throws IoError naming the file on failure (nothing left behind).
+void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,
+                   const Provenance& provenance);
+
+/// Reads a snapshot. Throws IoError naming the file if it is missing, of another format or
+/// major version, or inconsistent.
+Snapshot readSnapshot(const std::filesystem::path& path);
+
+}  // namespace gsph

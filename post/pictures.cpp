@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: MIT
+#include "pictures.hpp"
+
+#include <vtkActor.h>
+#include <vtkAxis.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkChartLegend.h>
+#include <vtkChartXY.h>
+#include <vtkContextScene.h>
+#include <vtkContextView.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPen.h>
+#include <vtkPlot.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTable.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.hpp"
+#include "io/atomic_file.hpp"
+#include "vtk_output.hpp"
+
+namespace gsph::post {
+namespace {
+
+double fieldValue(const Snapshot& s, std::size_t a, const std::string& field) {
+    if (field == "von_mises") return vonMises(s.stress[a]);
+    if (field == "pressure") return -s.stress[a].trace() / 3.0;
+    if (field == "displacement") return (s.x[a] - s.X[a]).norm();
+    if (field == "velocity") return s.v[a].norm();
+    return s.F[a].determinant();  // "J"
+}
+
+void savePng(vtkRenderWindow* window, const std::filesystem::path& png) {
+    window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(window);
+    grab->ReadFrontBufferOff();
+    grab->Update();
+    writeAtomically(png, [&](const std::filesystem::path& temp) {
+        vtkNew<vtkPNGWriter> writer;
+        writer->SetFileName(temp.c_str());
+        writer->SetInputConnection(grab->GetOutputPort());
+        writer->Write();
+        if (!std::filesystem::exists(temp) || std::filesystem::file_size(temp) == 0)
+            throw IoError(png.string() + ": could not write the picture");
+    });
+}
+
+}  // namespace
+
+bool isPictureField(const std::string& f) {
+    return f == "von_mises" || f == "pressure" || f == "displacement" || f == "velocity" ||
+           f == "J";
+}
+
+void renderSnapshot(const Snapshot& s, const std::string& field, const std::filesystem::path& png,
+                    int width, int height) {
+    if (!isPictureField(field)) throw InputError("unknown picture field '" + field + "'");
+    const vtkIdType n = s.size();
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> vertices;
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(field.c_str());
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (vtkIdType a = 0; a < n; ++a) {
+        const auto i = static_cast<std::size_t>(a);
+        points->InsertNextPoint(s.x[i].data());
+        vertices->InsertNextCell(1, &a);
+        values->InsertNextValue(fieldValue(s, i, field));
+        lo = lo.cwiseMin(s.x[i]);
+        hi = hi.cwiseMax(s.x[i]);
+    }
+    vtkNew<vtkPolyData> cloud;
+    cloud->SetPoints(points);
+    cloud->SetVerts(vertices);
+    cloud->GetPointData()->SetScalars(values);
+
+    double range[2];
+    values->GetRange(range);
+    if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+    vtkNew<vtkLookupTable> colours;
+    colours->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
+    colours->SetTableRange(range);
+    colours->Build();
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputData(cloud);
+    mapper->SetLookupTable(colours);
+    mapper->SetScalarRange(range);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetRenderPointsAsSpheres(true);
+    // Sphere size in pixels from the mean particle spacing and the picture's scale.
+    const Vec3 extent = (hi - lo).cwiseMax(1e-12);
+    const int dims = (extent.array() > 1e-9 * extent.maxCoeff()).count();
+    double bulk = 1.0;
+    for (int d = 0; d < 3; ++d)
+        if (extent[d] > 1e-9 * extent.maxCoeff()) bulk *= extent[d];
+    const double spacing = std::pow(bulk / std::max<vtkIdType>(n, 1), 1.0 / std::max(dims, 1));
+    actor->GetProperty()->SetPointSize(
+        static_cast<float>(std::clamp(0.75 * width * spacing / extent.norm(), 2.0, 40.0)));
+
+    vtkNew<vtkScalarBarActor> bar;
+    bar->SetLookupTable(colours);
+    bar->SetTitle(field.c_str());
+    bar->SetNumberOfLabels(5);
+    bar->SetLabelFormat("%.3g");
+    vtkNew<vtkTextActor> title;
+    char text[128];
+    std::snprintf(text, sizeof text, "t = %.4g s   (%d particles)", s.time, static_cast<int>(n));
+    title->SetInput(text);
+    title->GetTextProperty()->SetFontSize(22);
+    title->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+    title->SetDisplayPosition(20, height - 40);
+
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(1.0, 1.0, 1.0);
+    renderer->AddActor(actor);
+    renderer->AddActor2D(bar);
+    renderer->AddActor2D(title);
+    vtkCamera* camera = renderer->GetActiveCamera();
+    const Vec3 centre = 0.5 * (lo + hi);
+    camera->SetFocalPoint(centre.data());
+    const Vec3 eye = centre + Vec3(0.6, -1.0, 0.7) * extent.norm();
+    camera->SetPosition(eye.data());
+    camera->SetViewUp(0, 0, 1);
+    if (dims == 2 && extent[2] < 1e-9 * extent.maxCoeff()) {  // a plane: look at it face on
+        const Vec3 above = centre + Vec3(0, 0, 2.0 * extent.norm());
+        camera->SetPosition(above.data());
+        camera->SetViewUp(0, 1, 0);
+    }
+    renderer->ResetCamera();
+    camera->Zoom(1.2);
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(width, height);
+    window->AddRenderer(renderer);
+    savePng(window, png);
+}
+
+void plotHistory(const std::filesystem::path& csv, const std::filesystem::path& png, int width,
+                 int height) {
+    std::ifstream in(csv);
+    if (!in) throw InputError(csv.string() + ": cannot read");
+    std::string header;
+    std::getline(in, header);
+    std::vector<std::string> names;
+    std::stringstream hs(header);
+    for (std::string col; std::getline(hs, col, ',');) names.push_back(col);
+    std::vector<std::vector<double>> cols(names.size());
+    for (std::string line; std::getline(in, line);) {
+        std::stringstream ls(line);
+        std::size_t c = 0;
+        for (std::string cell; std::getline(ls, cell, ',') && c < cols.size(); ++c)
+            cols[c].push_back(std::stod(cell));
+    }
+    const std::vector<std::string> energies = {"kinetic_energy", "internal_energy",
+                                               "hourglass_work", "viscous_work",
+                                               "external_work",  "total_energy"};
+    vtkNew<vtkTable> table;
+    vtkNew<vtkFloatArray> time;
+    time->SetName("time [s]");
+    table->AddColumn(time);
+    std::vector<std::size_t> plotted;
+    for (const std::string& e : energies)
+        for (std::size_t c = 0; c < names.size(); ++c)
+            if (names[c] == e) {
+                vtkNew<vtkFloatArray> column;
+                column->SetName(e.c_str());
+                table->AddColumn(column);
+                plotted.push_back(c);
+            }
+    if (names.empty() || names[0] != "time" || plotted.empty())
+        throw InputError(csv.string() + ": not a gsph history (no time and energy columns)");
+    table->SetNumberOfRows(static_cast<vtkIdType>(cols[0].size()));
+    for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r) {
+        table->SetValue(r, 0, cols[0][static_cast<std::size_t>(r)]);
+        for (std::size_t p = 0; p < plotted.size(); ++p)
+            table->SetValue(r, static_cast<vtkIdType>(p + 1),
+                            cols[plotted[p]][static_cast<std::size_t>(r)]);
+    }
+    vtkNew<vtkContextView> view;
+    view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
+    view->GetRenderWindow()->SetOffScreenRendering(1);
+    view->GetRenderWindow()->SetSize(width, height);
+    vtkNew<vtkChartXY> chart;
+    view->GetScene()->AddItem(chart);
+    chart->SetShowLegend(true);
+    chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("time [s]");
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle("energy [J]");
+    const unsigned char palette[6][3] = {{31, 119, 180}, {255, 127, 14},  {44, 160, 44},
+                                         {214, 39, 40},  {148, 103, 189}, {0, 0, 0}};
+    for (std::size_t p = 0; p < plotted.size(); ++p) {
+        vtkPlot* line = chart->AddPlot(vtkChart::LINE);
+        line->SetInputData(table, 0, static_cast<vtkIdType>(p + 1));
+        line->SetColor(palette[p % 6][0], palette[p % 6][1], palette[p % 6][2], 255);
+        line->SetWidth(2.0);
+    }
+    savePng(view->GetRenderWindow(), png);
+}
+
+}  // namespace gsph::post

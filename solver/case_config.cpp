@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: MIT
+#include "case_config.hpp"
+
+#include <toml++/toml.h>
+#include <cmath>
+#include <set>
+
+#include "core/error.hpp"
+
+namespace gsph::solver {
+namespace {
+
+// Reads one TOML table, remembering which keys were used, so unknown keys can be reported.
+class TableReader {
+  public:
+    TableReader(const std::string& file, const toml::table& table, std::string where)
+        : file_(file), table_(table), where_(std::move(where)) {}
+
+    [[noreturn]] void fail(const toml::node* node, const std::string& what) const {
+        const int line = node ? static_cast<int>(node->source().begin.line)
+                              : static_cast<int>(table_.source().begin.line);
+        throw InputError(file_ + ":" + std::to_string(line) + ": " + what);
+    }
+
+    int line() const { return static_cast<int>(table_.source().begin.line); }
+
+    double number(const std::string& key, double fallback, bool required, bool positive) {
+        used_.insert(key);
+        const toml::node* n = table_.get(key);
+        if (!n) {
+            if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
+            return fallback;
+        }
+        const std::optional<double> v = n->value<double>();
+        if (!v || !std::isfinite(*v)) fail(n, "'" + key + "' in " + where_ + " must be a number");
+        if (positive && !(*v > 0.0)) fail(n, "'" + key + "' in " + where_ + " must be > 0");
+        if (!positive && *v < 0.0) fail(n, "'" + key + "' in " + where_ + " must be ≥ 0");
+        return *v;
+    }
+
+    std::string text(const std::string& key, const std::string& fallback, bool required) {
+        used_.insert(key);
+        const toml::node* n = table_.get(key);
+        if (!n) {
+            if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
+            return fallback;
+        }
+        if (const auto i = n->value<std::int64_t>(); i && n->is_integer())
+            return std::to_string(*i);
+        const std::optional<std::string> v = n->value<std::string>();
+        if (!v || v->empty()) fail(n, "'" + key + "' in " + where_ + " must be a non-empty string");
+        return *v;
+    }
+
+    bool flag(const std::string& key, bool fallback) {
+        used_.insert(key);
+        const toml::node* n = table_.get(key);
+        if (!n) return fallback;
+        const std::optional<bool> v = n->value<bool>();
+        if (!v) fail(n, "'" + key + "' in " + where_ + " must be true or false");
+        return *v;
+    }
+
+    bool has(const std::string& key) const { return table_.get(key) != nullptr; }
+
+    /// A list of `size` numbers.
+    std::vector<double> numbers(const std::string& key, std::size_t size) {
+        used_.insert(key);
+        const toml::node* n = table_.get(key);
+        const toml::array* arr = n ? n->as_array() : nullptr;
+        if (!arr || arr->size() != size)
+            fail(n, "'" + key + "' in " + where_ + " must be a list of " + std::to_string(size) +
+                        " numbers");
+        std::vector<double> out;
+        for (const toml::node& e : *arr) {
+            const std::optional<double> v = e.value<double>();
+            if (!v || !std::isfinite(*v))
+                fail(&e, "'" + key + "' in " + where_ + " must hold numbers");
+            out.push_back(*v);
+        }
+        return out;
+    }
+
+    Vec3 vector(const std::string& key) {
+        const std::vector<double> v = numbers(key, 3);
+        return Vec3(v[0], v[1], v[2]);
+    }
+
+    void rejectUnknownKeys() const {
+        for (const auto& [key, node] : table_)
+            if (!used_.count(std::string(key.str())))
+                fail(&node, "unknown key '" + std::string(key.str()) + "' in " + where_);
+    }
+
+  private:
+    std::string file_;
+    const toml::table& table_;
+    std::string where_;
+    std::set<std::string> used_;
+};
+
+const toml::array* arrayOfTables(const std::string& file, const toml::table& root,
+                                 const std::string& key) {
+    const toml::node* n = root.get(key);
+    if (!n) return nullptr;
+    const toml::array* arr = n->as_array();
+    if (!arr || !arr->is_array_of_tables())
+        throw InputError(file + ":" + std::to_string(n->source().begin.line) + ": '" + key +
+                         "' must be written [[" + key + "]]");
+    return arr;
+}
+
+void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
+    const toml::table* run = root["run"].as_table();
+    if (!run) throw InputError(file + ":1: missing table [run]");
+    TableReader r(file, *run, "[run]");
+    c.particles = r.text("particles", "", true);
+    if (c.particles.is_relative()) c.particles = c.caseFile.parent_path() / c.particles;
+    c.endTime = r.number("end_time", 0.0, true, true);
+    c.outputInterval = r.number("output_interval", c.endTime / 10.0, false, true);
+    c.cfl = r.number("cfl", c.cfl, false, true);
+    if (c.cfl > 1.0) r.fail(run->get("cfl"), "'cfl' in [run] must be ≤ 1");
+    c.kappa = r.number("kappa", c.kappa, false, true);
+    if (r.has("viscosity")) {
+        const std::vector<double> beta = r.numbers("viscosity", 2);
+        if (beta[0] < 0.0 || beta[1] < 0.0)
+            r.fail(run->get("viscosity"), "'viscosity' in [run] must be ≥ 0");
+        c.viscosity = {beta[0], beta[1]};
+    }
+    c.hourglass = r.number("hourglass", c.hourglass, false, false);
+    r.rejectUnknownKeys();
+}
+
+}  // namespace
+
+CaseConfig readCaseFile(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!std::filesystem::exists(path)) throw InputError(file + ": no such case file");
+    toml::table root;
+    try {
+        root = toml::parse_file(file);
+    } catch (const toml::parse_error& e) {
+        throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " +
+                         std::string(e.description()));
+    }
+    CaseConfig c;
+    c.caseFile = path;
+    for (const auto& [key, node] : root) {
+        const std::string k(key.str());
+        if (k != "run" && k != "material" && k != "body" && k != "set")
+            throw InputError(file + ":" + std::to_string(node.source().begin.line) +
+                             ": unknown table '" + k +
+                             "' (expected [run], [[material]], [[body]], [[set]])");
+    }
+    readRun(file, root, c);
+
+    if (const toml::array* materials = arrayOfTables(file, root, "material"))
+        for (const toml::node& n : *materials) {
+            TableReader r(file, *n.as_table(), "[[material]]");
+            MaterialSpec m;
+            m.line = r.line();
+            m.name = r.text("name", "", true);
+            m.model = r.text("model", "elastic", false);
+            if (m.model != "elastic")
+                r.fail(n.as_table()->get("model"),
+                       "material model '" + m.model + "' is not known (available: elastic)");
+            const double rho = r.number("density", 0, true, true);
+            const double E = r.number("youngs_modulus", 0, true, true);
+            const double nu = r.number("poisson_ratio", 0, true, false);
+            try {
+                m.elastic = ElasticConstants(rho, E, nu);
+            } catch (const InputError& e) {
+                r.fail(n.as_table()->get("poisson_ratio"),
+                       std::string(e.what()) + " in material '" + m.name + "'");
+            }
+            r.rejectUnknownKeys();
+            for (const MaterialSpec& other : c.materials)
+                if (other.name == m.name)
+                    r.fail(nullptr, "material '" + m.name + "' is defined twice");
+            c.materials.push_back(m);
+        }
+    if (c.materials.empty()) throw InputError(file + ": no [[material]] defined");
+
+    if (const toml::array* bodies = arrayOfTables(file, root, "body"))
+        for (const toml::node& n : *bodies) {
+            TableReader r(file, *n.as_table(), "[[body]]");
+            BodySpec b;
+            b.line = r.line();
+            b.group = r.text("group", "", true);
+            b.material = r.text("material", "", true);
+            bool known = false;
+            for (const MaterialSpec& m : c.materials) known = known || m.name == b.material;
+            if (!known)
+                r.fail(n.as_table()->get("material"),
+                       "material '" + b.material + "' is not defined");
+            if (r.has("velocity")) b.velocity = r.vector("velocity");
+            r.rejectUnknownKeys();
+            c.bodies.push_back(b);
+        }
+    if (c.bodies.empty()) throw InputError(file + ": no [[body]] defined");
+
+    if (const toml::array* sets = arrayOfTables(file, root, "set"))
+        for (const toml::node& n : *sets) {
+            TableReader r(file, *n.as_table(), "[[set]]");
+            SetSpec s;
+            s.line = r.line();
+            s.name = r.text("name", "", true);
+            s.fixed = r.flag("fixed", false);
+            if (r.has("velocity")) {
+                if (s.fixed)
+                    r.fail(n.as_table()->get("velocity"),
+                           "set '" + s.name + "' is both fixed and given a velocity");
+                s.velocity = r.vector("velocity");
+            } else if (!s.fixed) {
+                r.fail(nullptr, "set '" + s.name + "' needs 'fixed = true' or a 'velocity'");
+            }
+            r.rejectUnknownKeys();
+            c.sets.push_back(s);
+        }
+    return c;
+}
+
+}  // namespace gsph::solver
