@@ -17,9 +17,9 @@
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPointData.h>
+#include <vtkPointGaussianMapper.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -81,12 +81,15 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     vtkNew<vtkCellArray> vertices;
     vtkNew<vtkDoubleArray> values;
     values->SetName(field.c_str());
+    vtkNew<vtkDoubleArray> radius;  // each particle drawn with its own current size
+    radius->SetName("radius");
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (vtkIdType a = 0; a < n; ++a) {
         const auto i = static_cast<std::size_t>(a);
         points->InsertNextPoint(s.x[i].data());
         vertices->InsertNextCell(1, &a);
         values->InsertNextValue(fieldValue(s, i, field));
+        radius->InsertNextValue(0.5 * std::cbrt(s.volume[i] * s.F[i].determinant()));
         lo = lo.cwiseMin(s.x[i]);
         hi = hi.cwiseMax(s.x[i]);
     }
@@ -94,6 +97,7 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     cloud->SetPoints(points);
     cloud->SetVerts(vertices);
     cloud->GetPointData()->SetScalars(values);
+    cloud->GetPointData()->AddArray(radius);
 
     double range[2];
     values->GetRange(range);
@@ -102,27 +106,32 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     colours->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
     colours->SetTableRange(range);
     colours->Build();
-    vtkNew<vtkPolyDataMapper> mapper;
+    // Shaded discs of each particle's radius (fast for 1e6 particles, unlike sphere glyphs).
+    vtkNew<vtkPointGaussianMapper> mapper;
     mapper->SetInputData(cloud);
     mapper->SetLookupTable(colours);
     mapper->SetScalarRange(range);
+    mapper->SetScaleArray("radius");
+    mapper->SetScaleFactor(1.0);
+    mapper->EmissiveOff();
+    mapper->SetSplatShaderCode(
+        "//VTK::Color::Impl\n"
+        "float dist = dot(offsetVCVSOutput.xy, offsetVCVSOutput.xy);\n"
+        "if (dist > 1.0) { discard; } else {\n"
+        "  float shade = sqrt(1.0 - dist);\n"
+        "  ambientColor *= shade; diffuseColor *= shade; }\n");
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
-    actor->GetProperty()->SetRenderPointsAsSpheres(true);
-    // Sphere size in pixels from the mean particle spacing and the picture's scale.
     const Vec3 extent = (hi - lo).cwiseMax(1e-12);
     const int dims = (extent.array() > 1e-9 * extent.maxCoeff()).count();
-    double bulk = 1.0;
-    for (int d = 0; d < 3; ++d)
-        if (extent[d] > 1e-9 * extent.maxCoeff()) bulk *= extent[d];
-    const double spacing = std::pow(bulk / std::max<vtkIdType>(n, 1), 1.0 / std::max(dims, 1));
-    actor->GetProperty()->SetPointSize(
-        static_cast<float>(std::clamp(0.75 * width * spacing / extent.norm(), 2.0, 40.0)));
 
     vtkNew<vtkScalarBarActor> bar;
     bar->SetLookupTable(colours);
     bar->SetTitle(field.c_str());
     bar->SetNumberOfLabels(5);
+    bar->SetPosition(0.9, 0.1);
+    bar->SetWidth(0.08);
+    bar->SetHeight(0.8);
     bar->SetLabelFormat("%.3g");
     vtkNew<vtkTextActor> title;
     char text[128];

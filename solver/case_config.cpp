@@ -2,19 +2,28 @@
 #include "case_config.hpp"
 
 #include <toml++/toml.h>
+#include <algorithm>
 #include <cmath>
-#include <set>
+#include <initializer_list>
 
 #include "core/error.hpp"
 
 namespace gsph::solver {
 namespace {
 
-// Reads one TOML table, remembering which keys were used, so unknown keys can be reported.
+// Reads one TOML table. Unknown keys are reported first (a misspelt key must not surface as
+// "missing key" of its correct spelling).
 class TableReader {
   public:
-    TableReader(const std::string& file, const toml::table& table, std::string where)
-        : file_(file), table_(table), where_(std::move(where)) {}
+    TableReader(const std::string& file, const toml::table& table, std::string where,
+                std::initializer_list<const char*> allowed)
+        : file_(file), table_(table), where_(std::move(where)) {
+        for (const auto& [key, node] : table_) {
+            const std::string k(key.str());
+            if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return k == a; }))
+                fail(&node, "unknown key '" + k + "' in " + where_);
+        }
+    }
 
     [[noreturn]] void fail(const toml::node* node, const std::string& what) const {
         const int line = node ? static_cast<int>(node->source().begin.line)
@@ -25,7 +34,6 @@ class TableReader {
     int line() const { return static_cast<int>(table_.source().begin.line); }
 
     double number(const std::string& key, double fallback, bool required, bool positive) {
-        used_.insert(key);
         const toml::node* n = table_.get(key);
         if (!n) {
             if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
@@ -39,7 +47,6 @@ class TableReader {
     }
 
     std::string text(const std::string& key, const std::string& fallback, bool required) {
-        used_.insert(key);
         const toml::node* n = table_.get(key);
         if (!n) {
             if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
@@ -53,7 +60,6 @@ class TableReader {
     }
 
     bool flag(const std::string& key, bool fallback) {
-        used_.insert(key);
         const toml::node* n = table_.get(key);
         if (!n) return fallback;
         const std::optional<bool> v = n->value<bool>();
@@ -65,7 +71,6 @@ class TableReader {
 
     /// A list of `size` numbers.
     std::vector<double> numbers(const std::string& key, std::size_t size) {
-        used_.insert(key);
         const toml::node* n = table_.get(key);
         const toml::array* arr = n ? n->as_array() : nullptr;
         if (!arr || arr->size() != size)
@@ -86,17 +91,10 @@ class TableReader {
         return Vec3(v[0], v[1], v[2]);
     }
 
-    void rejectUnknownKeys() const {
-        for (const auto& [key, node] : table_)
-            if (!used_.count(std::string(key.str())))
-                fail(&node, "unknown key '" + std::string(key.str()) + "' in " + where_);
-    }
-
   private:
     std::string file_;
     const toml::table& table_;
     std::string where_;
-    std::set<std::string> used_;
 };
 
 const toml::array* arrayOfTables(const std::string& file, const toml::table& root,
@@ -113,7 +111,12 @@ const toml::array* arrayOfTables(const std::string& file, const toml::table& roo
 void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const toml::table* run = root["run"].as_table();
     if (!run) throw InputError(file + ":1: missing table [run]");
-    TableReader r(file, *run, "[run]");
+    TableReader r(
+        file, *run, "[run]",
+        {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity", "hourglass"});
+    c.particlesLine = run->get("particles")
+                          ? static_cast<int>(run->get("particles")->source().begin.line)
+                          : r.line();
     c.particles = r.text("particles", "", true);
     if (c.particles.is_relative()) c.particles = c.caseFile.parent_path() / c.particles;
     c.endTime = r.number("end_time", 0.0, true, true);
@@ -128,7 +131,6 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
         c.viscosity = {beta[0], beta[1]};
     }
     c.hourglass = r.number("hourglass", c.hourglass, false, false);
-    r.rejectUnknownKeys();
 }
 
 }  // namespace
@@ -156,7 +158,8 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
 
     if (const toml::array* materials = arrayOfTables(file, root, "material"))
         for (const toml::node& n : *materials) {
-            TableReader r(file, *n.as_table(), "[[material]]");
+            TableReader r(file, *n.as_table(), "[[material]]",
+                          {"name", "model", "density", "youngs_modulus", "poisson_ratio"});
             MaterialSpec m;
             m.line = r.line();
             m.name = r.text("name", "", true);
@@ -173,7 +176,6 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
                 r.fail(n.as_table()->get("poisson_ratio"),
                        std::string(e.what()) + " in material '" + m.name + "'");
             }
-            r.rejectUnknownKeys();
             for (const MaterialSpec& other : c.materials)
                 if (other.name == m.name)
                     r.fail(nullptr, "material '" + m.name + "' is defined twice");
@@ -183,7 +185,7 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
 
     if (const toml::array* bodies = arrayOfTables(file, root, "body"))
         for (const toml::node& n : *bodies) {
-            TableReader r(file, *n.as_table(), "[[body]]");
+            TableReader r(file, *n.as_table(), "[[body]]", {"group", "material", "velocity"});
             BodySpec b;
             b.line = r.line();
             b.group = r.text("group", "", true);
@@ -194,14 +196,13 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
                 r.fail(n.as_table()->get("material"),
                        "material '" + b.material + "' is not defined");
             if (r.has("velocity")) b.velocity = r.vector("velocity");
-            r.rejectUnknownKeys();
             c.bodies.push_back(b);
         }
     if (c.bodies.empty()) throw InputError(file + ": no [[body]] defined");
 
     if (const toml::array* sets = arrayOfTables(file, root, "set"))
         for (const toml::node& n : *sets) {
-            TableReader r(file, *n.as_table(), "[[set]]");
+            TableReader r(file, *n.as_table(), "[[set]]", {"name", "fixed", "velocity"});
             SetSpec s;
             s.line = r.line();
             s.name = r.text("name", "", true);
@@ -214,7 +215,6 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
             } else if (!s.fixed) {
                 r.fail(nullptr, "set '" + s.name + "' needs 'fixed = true' or a 'velocity'");
             }
-            r.rejectUnknownKeys();
             c.sets.push_back(s);
         }
     return c;

@@ -38,6 +38,7 @@ struct SetSpec {
 struct CaseConfig {
     std::filesystem::path caseFile;
     std::filesystem::path particles;  ///< resolved against the case file's folder
+    int particlesLine = 0;            ///< where [run] particles is set (for messages)
     double endTime = 0.0;             ///< [s]
     double outputInterval = 0.0;      ///< [s]
     double cfl = 0.3;

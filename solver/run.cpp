@@ -27,6 +27,15 @@ struct BodySetup {
 };
 
 BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
+    for (const BodySpec& s : c.bodies) {
+        bool found = false;
+        for (std::size_t b = 0; b < file.bodies.size(); ++b)
+            found = found || s.group == file.bodies[b].name || s.group == std::to_string(b);
+        if (!found)
+            throw InputError(c.caseFile.string() + ":" + std::to_string(s.line) +
+                             ": [[body]] group '" + s.group + "' is not a body of " +
+                             c.particles.string());
+    }
     BodySetup setup;
     for (std::size_t b = 0; b < file.bodies.size(); ++b) {
         const BodyInfo& info = file.bodies[b];
@@ -44,15 +53,6 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         setup.materials.emplace_back(HypoElastic(m->elastic));
         setup.density.push_back(m->elastic.density);
         setup.velocity.push_back(spec->velocity);
-    }
-    for (const BodySpec& s : c.bodies) {
-        bool found = false;
-        for (std::size_t b = 0; b < file.bodies.size(); ++b)
-            found = found || s.group == file.bodies[b].name || s.group == std::to_string(b);
-        if (!found)
-            throw InputError(c.caseFile.string() + ":" + std::to_string(s.line) +
-                             ": [[body]] group '" + s.group + "' is not a body of " +
-                             c.particles.string());
     }
     return setup;
 }
@@ -123,7 +123,13 @@ void drawProgress(double t, double end, long steps, double wall, int particles) 
 }  // namespace
 
 RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
-    const ParticleFile file = readParticleFile(c.particles);
+    ParticleFile file;
+    try {
+        file = readParticleFile(c.particles);
+    } catch (const Error& e) {
+        throw InputError(c.caseFile.string() + ":" + std::to_string(c.particlesLine) +
+                         ": particle file: " + e.what());
+    }
     BodySetup bodies = matchBodies(c, file);
     std::vector<VelocityConstraint> constraints = matchSets(c, file);
     SolverOptions solverOptions;

@@ -77,6 +77,7 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         const std::vector<double> F = rowMajor(state.F);
         f.write("/particles/stress", stress.data(), {n, 9});
         f.write("/particles/F", F.data(), {n, 9});
+        f.write("/particles/volume", ref.quadVolume.data(), {n});
         f.write("/particles/body", ref.body.data(), {n});
         f.write("/particles/space", ref.space.data(), {n});
     });
@@ -104,6 +105,9 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     s.v = readVectors(f, "/particles/v", n);
     s.stress = readTensors(f, "/particles/stress", n);
     s.F = readTensors(f, "/particles/F", n);
+    s.volume = f.read<double>("/particles/volume", dims);
+    if (s.volume.size() != n)
+        throw IoError(path.string() + ": /particles/volume has the wrong length");
     return s;
 }
 

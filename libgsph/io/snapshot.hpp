@@ -7,6 +7,7 @@
 //   /particles/X, x, v           N×3 reference position, position, velocity
 //   /particles/stress            N×9 Cauchy stress, row-major
 //   /particles/F                 N×9 deformation gradient, row-major
+//   /particles/volume            N reference quadrature volume ω det M [m³]
 //   /particles/body, space       N int32
 #pragma once
 
@@ -29,6 +30,7 @@ struct Snapshot {
     long step = 0;
     std::vector<Vec3> X, x, v;
     std::vector<Mat3> stress, F;
+    std::vector<double> volume;
     std::vector<Index> body, space;
     Provenance provenance;
     Index size() const { return static_cast<Index>(x.size()); }
