@@ -37,6 +37,14 @@ void Simulation::setVelocity(const std::function<Vec3(const Vec3& X)>& velocity)
     for (std::size_t a = 0; a < state_.v.size(); ++a) state_.v[a] = velocity(ref_.X[a]);
 }
 
+void Simulation::setVelocities(const std::vector<Vec3>& velocities) {
+    if (integrator_) throw Error("initial velocities must be set before the first step");
+    if (velocities.size() != state_.v.size())
+        throw InputError("setVelocities: " + std::to_string(velocities.size()) +
+                         " velocities for " + std::to_string(state_.v.size()) + " particles");
+    state_.v = velocities;
+}
+
 void Simulation::start() {
     if (integrator_) return;
     integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_);

@@ -36,6 +36,8 @@ class Simulation {
 
     void constrain(VelocityConstraint constraint);
     void setVelocity(const std::function<Vec3(const Vec3& X)>& velocity);
+    /// One initial velocity per particle (size must equal the particle count).
+    void setVelocities(const std::vector<Vec3>& velocities);
 
     /// Computes the initial accelerations and time step; called by the first step if needed.
     void start();

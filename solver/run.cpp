@@ -144,8 +144,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     for (Index a = 0; a < ref.size(); ++a)
         initial[static_cast<std::size_t>(a)] =
             bodies.velocity[static_cast<std::size_t>(ref.body[static_cast<std::size_t>(a)])];
-    std::size_t next = 0;
-    sim.setVelocity([&](const Vec3&) { return initial[next++]; });
+    sim.setVelocities(initial);
 
     std::filesystem::create_directories(options.runDir);
     const Provenance provenance = provenanceOf("gsph-solve", kVersion, c.caseFile);

@@ -35,24 +35,22 @@ std::vector<Mat3> fromRowMajor(const std::vector<double>& d) {
     return out;
 }
 
-std::vector<Vec3> readVectors(const h5::File& f, const std::string& path, std::size_t n) {
+// An N×cols float64 dataset, its shape checked.
+std::vector<double> readRows(const h5::File& f, const std::string& path, std::size_t n,
+                             std::size_t cols) {
     std::vector<std::size_t> dims;
-    const std::vector<double> d = f.read<double>(path, dims);
-    if (dims.size() != 2 || dims[0] != n || dims[1] != 3)
-        throw IoError(f.name() + ": " + path + " is not an N×3 array of " + std::to_string(n) +
-                      " rows");
+    std::vector<double> d = f.read<double>(path, dims);
+    if (dims.size() != 2 || dims[0] != n || dims[1] != cols)
+        throw IoError(f.name() + ": " + path + " is not an N×" + std::to_string(cols) +
+                      " array of " + std::to_string(n) + " rows");
+    return d;
+}
+
+std::vector<Vec3> readVectors(const h5::File& f, const std::string& path, std::size_t n) {
+    const std::vector<double> d = readRows(f, path, n, 3);
     std::vector<Vec3> out(n);
     for (std::size_t a = 0; a < n; ++a) out[a] = Vec3(d[3 * a], d[3 * a + 1], d[3 * a + 2]);
     return out;
-}
-
-std::vector<Mat3> readTensors(const h5::File& f, const std::string& path, std::size_t n) {
-    std::vector<std::size_t> dims;
-    const std::vector<double> d = f.read<double>(path, dims);
-    if (dims.size() != 2 || dims[0] != n || dims[1] != 9)
-        throw IoError(f.name() + ": " + path + " is not an N×9 array of " + std::to_string(n) +
-                      " rows");
-    return fromRowMajor(d);
 }
 
 }  // namespace
@@ -103,8 +101,8 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     s.X = readVectors(f, "/particles/X", n);
     s.x = readVectors(f, "/particles/x", n);
     s.v = readVectors(f, "/particles/v", n);
-    s.stress = readTensors(f, "/particles/stress", n);
-    s.F = readTensors(f, "/particles/F", n);
+    s.stress = fromRowMajor(readRows(f, "/particles/stress", n, 9));
+    s.F = fromRowMajor(readRows(f, "/particles/F", n, 9));
     s.volume = f.read<double>("/particles/volume", dims);
     if (s.volume.size() != n)
         throw IoError(path.string() + ": /particles/volume has the wrong length");

@@ -4,6 +4,7 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -30,7 +31,7 @@ struct SpaceSearch {
 
 Vec3 minimumImage(Vec3 r, const SpaceSearch& s) {
     for (int d = 0; d < 3; ++d)
-        if (s.lattice->periodic[d]) r[d] -= s.period[d] * std::round(r[d] / s.period[d]);
+        if (s.lattice->periodic[d]) r[d] -= s.period[d] * std::floor(r[d] / s.period[d] + 0.5);
     return r;
 }
 
@@ -40,7 +41,7 @@ Index latticeKernelId(const Vec3& r, const SpaceSearch& s) {
     Index id = 0;
     for (int d = 0; d < 3; ++d) {
         const double o = r[d] / s.lattice->dtheta;
-        const double k = std::round(o);
+        const double k = std::floor(o + 0.5);
         if (std::abs(o - k) > kLatticeTolerance || std::abs(k) > m) return -1;
         id = id * w + static_cast<Index>(k) + m;
     }
@@ -85,18 +86,45 @@ std::vector<SpaceSearch> prepareSpaces(Reference& ref) {
 // the support; implemented by the two search structures below.
 class CellList {
   public:
+    // On a space whose particles all sit on lattice sites, the cells are the lattice cells
+    // (at most one particle each) and the visited cells are the sites within the support: no
+    // wasted distance checks. Otherwise cells of one support radius and their 27 neighbours.
     CellList(const Reference& ref, const std::vector<SpaceSearch>& spaces) : ref_(ref) {
         grids_.resize(spaces.size());
+        std::vector<bool> onLattice(spaces.size(), true);
+        for (Index a = 0; a < ref.size(); ++a) {
+            const auto s = static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)]);
+            const Vec3 t = ref.theta[static_cast<std::size_t>(a)] / spaces[s].lattice->dtheta;
+            for (int d = 0; d < ref.dim.value; ++d) {
+                const double i = t[d] - 0.5;
+                if (std::abs(i - std::floor(i + 0.5)) > kLatticeTolerance || i < -0.5 ||
+                    i > spaces[s].lattice->cells[static_cast<std::size_t>(d)] - 0.5)
+                    onLattice[s] = false;
+            }
+        }
         for (std::size_t s = 0; s < spaces.size(); ++s) {
             Grid& g = grids_[s];
             g.search = &spaces[s];
             const double R = std::sqrt(spaces[s].radius2 / (1.0 - kSupportTolerance));
+            const int zDim = ref.dim.value == 2 ? 0 : 1;
             for (int d = 0; d < 3; ++d) {
                 g.lo[d] = 0.0;
                 const double extent = std::max(spaces[s].period[d], R);
-                g.n[d] = std::max(1, static_cast<int>(std::floor(extent / R)));
-                g.cellSize[d] = extent / g.n[d];
+                g.n[d] = onLattice[s] ? spaces[s].lattice->cells[static_cast<std::size_t>(d)]
+                                      : std::max(1, static_cast<int>(std::floor(extent / R)));
+                g.cellSize[d] = onLattice[s] ? spaces[s].lattice->dtheta : extent / g.n[d];
             }
+            const int m = onLattice[s] ? spaces[s].stencilHalfWidth : 1;
+            for (int i = -m; i <= m; ++i)
+                for (int j = -m; j <= m; ++j)
+                    for (int k = -m * zDim; k <= m * zDim; ++k) {
+                        const double r2 = (i * i + j * j + k * k) * g.cellSize[0] * g.cellSize[0];
+                        if (!onLattice[s] || r2 < spaces[s].radius2) g.stencil.push_back({i, j, k});
+                    }
+            // Wrapping can map two stencil cells onto one only when a periodic index has fewer
+            // cells than the stencil is wide.
+            for (int d = 0; d < 3; ++d)
+                g.mayAlias = g.mayAlias || (spaces[s].lattice->periodic[d] && g.n[d] < 2 * m + 1);
         }
         // θ may lie off the lattice box (never on one space today, but cheap to allow).
         const Index n = ref.size();
@@ -132,24 +160,24 @@ class CellList {
         const Vec3& ta = ref_.theta[static_cast<std::size_t>(a)];
         int base[3];
         g.cellCoords(cellOf_[static_cast<std::size_t>(a)], base);
-        Index seen[27];
-        int nSeen = 0;
-        const int zr = ref_.dim.value == 2 ? 0 : 1;
-        for (int dx = -1; dx <= 1; ++dx)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dz = -zr; dz <= zr; ++dz) {
-                    const int c[3] = {base[0] + dx, base[1] + dy, base[2] + dz};
-                    const Index cell = g.wrap(c);
-                    if (cell < 0 || std::find(seen, seen + nSeen, cell) != seen + nSeen) continue;
-                    seen[nSeen++] = cell;
-                    for (Index k = g.start[static_cast<std::size_t>(cell)];
-                         k < g.start[static_cast<std::size_t>(cell) + 1]; ++k) {
-                        const Index b = g.members[static_cast<std::size_t>(k)];
-                        const Vec3 r =
-                            minimumImage(ta - ref_.theta[static_cast<std::size_t>(b)], *g.search);
-                        if (r.squaredNorm() < g.search->radius2) visit(b, r);
-                    }
-                }
+        thread_local std::vector<Index> seen;
+        seen.clear();
+        for (const std::array<int, 3>& o : g.stencil) {
+            const int c[3] = {base[0] + o[0], base[1] + o[1], base[2] + o[2]};
+            const Index cell = g.wrap(c);
+            if (cell < 0) continue;
+            if (g.mayAlias) {
+                if (std::find(seen.begin(), seen.end(), cell) != seen.end()) continue;
+                seen.push_back(cell);
+            }
+            for (Index k = g.start[static_cast<std::size_t>(cell)];
+                 k < g.start[static_cast<std::size_t>(cell) + 1]; ++k) {
+                const Index b = g.members[static_cast<std::size_t>(k)];
+                const Vec3 r =
+                    minimumImage(ta - ref_.theta[static_cast<std::size_t>(b)], *g.search);
+                if (r.squaredNorm() < g.search->radius2) visit(b, r);
+            }
+        }
     }
 
   private:
@@ -158,6 +186,8 @@ class CellList {
         double lo[3] = {0, 0, 0};
         double cellSize[3] = {1, 1, 1};
         int n[3] = {1, 1, 1};
+        std::vector<std::array<int, 3>> stencil;  // cell offsets visited around a particle
+        bool mayAlias = false;
         std::vector<Index> start, members;
 
         Index cells() const { return static_cast<Index>(n[0]) * n[1] * n[2]; }

@@ -33,8 +33,7 @@ HourglassRun runCheckerboard(double alpha) {
         const int parity = static_cast<int>(t[0] + t[1] + t[2] - 1.5) % 2;
         v[static_cast<std::size_t>(a)] = Vec3(0, 0, parity ? 1.0 : -1.0);
     }
-    std::size_t i = 0;
-    sim.setVelocity([&](const Vec3&) { return v[i++]; });
+    sim.setVelocities(v);
     sim.start();
     const double e0 = sim.energy().total();
     HourglassRun r;
