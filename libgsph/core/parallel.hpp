@@ -3,11 +3,13 @@
 // - parallelFor(n, body): body(i) for i in [0, n), OpenMP static schedule. Each i must write
 //   only its own entries (gather, never scatter), so results do not depend on the thread count.
 // - deterministicSum(n, term): Σ term(i) summed in fixed chunks and a fixed order, so the
-//   result is bit-identical for any thread count (an OpenMP reduction would not be).
+//   result is bit-identical for any thread count (an OpenMP reduction would not be). The
+//   overload with a `partial` scratch vector does not allocate once that has grown.
 #pragma once
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace gsph {
@@ -27,9 +29,9 @@ inline void parallelFor(std::ptrdiff_t n, Body&& body) {
 inline constexpr std::ptrdiff_t kReductionChunk = 2048;
 
 template <class T, class Term>
-inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term) {
+inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term, std::vector<T>& partial) {
     const std::ptrdiff_t chunks = (n + kReductionChunk - 1) / kReductionChunk;
-    std::vector<T> partial(static_cast<std::size_t>(chunks), zero);
+    partial.assign(static_cast<std::size_t>(chunks), zero);
 #pragma omp parallel for schedule(static) if (n >= kParallelThreshold)
     for (std::ptrdiff_t c = 0; c < chunks; ++c) {
         T s = zero;
@@ -40,6 +42,12 @@ inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term) {
     T total = zero;
     for (const T& s : partial) total += s;
     return total;
+}
+
+template <class T, class Term>
+inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term) {
+    std::vector<T> partial;
+    return deterministicSum(n, zero, std::forward<Term>(term), partial);
 }
 
 /// Minimum of term(i) over [0, n); exact, so independent of the thread count.

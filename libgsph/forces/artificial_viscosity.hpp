@@ -8,6 +8,7 @@
 // total Lagrangian force like a pressure q_ab = ρ̄² π_ab: forces/internal_force.hpp.
 #pragma once
 
+#include "core/lanes.hpp"
 #include "core/types.hpp"
 
 namespace gsph {
@@ -18,14 +19,16 @@ struct ViscosityCoefficients {
     bool enabled() const { return linear != 0.0 || quadratic != 0.0; }
 };
 
-/// Pair pressure q_ab = ρ̄² π_ab [Pa] (0 for separating pairs).
-inline double viscousPairPressure(const ViscosityCoefficients& c, const Vec3& xab, const Vec3& vab,
-                                  double hab, double cbar, double rhobar) {
-    const double vx = vab.dot(xab);
-    if (vx >= 0.0) return 0.0;
-    const double phi = hab * vx / (xab.squaredNorm() + 0.01 * hab * hab);
-    const double pi = (-c.linear * cbar * phi + c.quadratic * phi * phi) / rhobar;
-    return rhobar * rhobar * pi;
+/// Pair pressure q_ab = ρ̄² π_ab = ρ̄ (−β1 c̄ φ + β2 φ²) [Pa], 0 for separating pairs.
+/// Takes the scalars vx = v_ab·x_ab and x2 = |x_ab|², and selects instead of branching; T is
+/// double (one pair) or Lanes (a strip of pairs, core/lanes.hpp).
+template <class T>
+[[gnu::always_inline]] inline T viscousPairPressure(const ViscosityCoefficients& c, const T& vx,
+                                                    const T& x2, const T& hab, const T& cbar,
+                                                    const T& rhobar) {
+    const T phi = hab * vx / (x2 + 0.01 * hab * hab);
+    const T q = rhobar * (-c.linear * cbar * phi + c.quadratic * phi * phi);
+    return whereNegative(vx, q);
 }
 
 }  // namespace gsph

@@ -16,14 +16,24 @@
 
 namespace gsph {
 
-/// The hourglass force on a from b: −k_ab s_ab x̂_ab = −k_ab [(ē·x_ab)/|x_ab|²] x_ab, written
-/// without a square root (ē = ½(F_a + F_b) X_ab − x_ab). pairWeight = ½ (V_a + V_b) ω W_ab.
+/// Coefficient κ_ab of the hourglass force on a from b, f = −κ_ab x_ab, i.e. k_ab s_ab/|x_ab|
+/// written without a square root: κ_ab = α E w_ab (ē·x_ab)/(|X_ab|² |x_ab|²) with
+/// ē·x_ab = predicted − x2, predicted = ½(F_a + F_b) X_ab · x_ab, x2 = |x_ab|², X2 = |X_ab|²,
+/// pairWeight w_ab = ½ (V_a + V_b) ω W_ab. T is double (one pair) or Lanes (core/lanes.hpp).
+template <class T>
+[[gnu::always_inline]] inline T hourglassPairCoefficient(double alphaE, const T& predicted,
+                                                         const T& x2, const T& X2,
+                                                         const T& pairWeight) {
+    return alphaE * pairWeight * (predicted - x2) / (X2 * x2);
+}
+
+/// The hourglass force on a from b (general pair-list path).
 inline Vec3 hourglassPairForce(double alphaE, const Mat3& Fa, const Mat3& Fb, const Vec3& XabRef,
                                const Vec3& xab, double pairWeight) {
-    const double x2 = xab.squaredNorm();
     const double predicted = 0.5 * ((Fa + Fb) * XabRef).dot(xab);  // ½(F_a + F_b) X_ab · x_ab
-    const double k = alphaE * pairWeight * (predicted - x2) / (XabRef.squaredNorm() * x2);
-    return -k * xab;
+    return -hourglassPairCoefficient<double>(alphaE, predicted, xab.squaredNorm(),
+                                             XabRef.squaredNorm(), pairWeight) *
+           xab;
 }
 
 }  // namespace gsph

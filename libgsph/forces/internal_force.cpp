@@ -1,101 +1,243 @@
 // SPDX-License-Identifier: MIT
 #include "forces/internal_force.hpp"
 
+#include <algorithm>
+#include <array>
+
+#include "core/lanes.hpp"
 #include "core/parallel.hpp"
 #include "forces/hourglass.hpp"
 
 namespace gsph {
 namespace {
 
+static_assert(kMinStencilRun >= kLanes, "a stencil block holds at least one strip");
+
+// Raw component pointers of every field the pair terms read: the stencil loops index them
+// directly so that the compiler sees plain contiguous streams.
+struct ForceView {
+    std::array<const double*, 9> K, N, F;
+    std::array<const double*, 3> x, v, X;
+    const double *h, *c, *rho, *V;
+    const KernelEntry* table;
+    ViscosityCoefficients viscosity;
+    double alphaE;  // α E of the hourglass penalty [Pa]
+};
+
+template <int R, int C>
+std::array<const double*, R * C> components(const SoaField<R, C>& f) {
+    std::array<const double*, R * C> p;
+    for (int i = 0; i < R * C; ++i) p[static_cast<std::size_t>(i)] = f.component(i);
+    return p;
+}
+
+// Per-particle sums of one block (component-major, filled strip by strip).
 // The pair sums are split so that per pair only the neighbour's factor is applied:
 //   Σ_b (K_c + K_b) w_cb = K_c Σ_b w_cb + Σ_b K_b w_cb,   w_cb = ω ∇W_cb (table),
-// and the same for the viscous N terms weighted by q_cb.
-template <bool Viscous, bool Hourglass>
-void forceLoop(const Reference& ref, const State& state, const StressFactors& sf,
-               const ForceOptions& opt, Index begin, Index end, std::vector<Vec3>& force,
-               ForceParts& parts) {
-    const PairList& P = ref.pairs;
-    const Index* nb = P.neighbor.data();
-    const Index* id = P.kernelId.data();
-    const KernelEntry* table = P.table.data();
-    const Vec3* x = state.x.data();
-    const Vec3* v = state.v.data();
-    const Vec3* X = ref.X.data();
-    const Mat3* K = sf.K.data();
-    const Mat3* N = sf.N.data();
-    const Mat3* F = state.F.data();
-    const double alphaE = opt.hourglass * opt.youngsModulus;
-    parallelFor(end - begin, [&](Index i) {
-        const Index c = begin + i;
-        const auto ic = static_cast<std::size_t>(c);
-        Vec3 sumW = Vec3::Zero();   // Σ w_cb
-        Vec3 fK = Vec3::Zero();     // Σ K_b w_cb
-        Vec3 sumQW = Vec3::Zero();  // Σ q_cb w_cb
-        Vec3 fN = Vec3::Zero();     // Σ q_cb N_b w_cb
-        Vec3 fh = Vec3::Zero();
-        const Vec3 xc = x[ic];
-        const Vec3 vc = v[ic];
-        const Vec3 Xc = X[ic];
-        const double cc = sf.soundSpeed[ic];
-        const double rhoc = sf.density[ic];
-        const double Vc = ref.quadVolume[ic];
-        const double hc = ref.smoothingLength[ic];
-        const Mat3 Fc = F[ic];
-        for (Index k = P.begin(c); k < P.end(c); ++k) {
-            const auto b = static_cast<std::size_t>(nb[k]);
-            const KernelEntry& e = table[id[k]];
-            // DESIGN §4: f_c = Σ_b (ω_b K_c + ω_c K_b) ∇W_cb
-            sumW += e.gradW;
-            fK.noalias() += K[b] * e.gradW;
-            if constexpr (Viscous) {
-                const Vec3 xcb = xc - x[b];
-                const Vec3 vcb = vc - v[b];
-                if (vcb.dot(xcb) < 0.0) {
-                    const double hcb = 0.5 * (hc + ref.smoothingLength[b]);
-                    const double q = viscousPairPressure(opt.viscosity, xcb, vcb, hcb,
-                                                         0.5 * (cc + sf.soundSpeed[b]),
-                                                         0.5 * (rhoc + sf.density[b]));
-                    sumQW += q * e.gradW;
-                    fN.noalias() += q * (N[b] * e.gradW);
-                }
-            }
-            if constexpr (Hourglass) {
-                const double weight = 0.5 * (Vc + ref.quadVolume[b]) * e.W;
-                fh += hourglassPairForce(alphaE, Fc, F[b], X[b] - Xc, x[b] - xc, weight);
-            }
+// and the same for the viscous N terms weighted by q_cb (DESIGN §4).
+struct BlockSums {
+    double fK[3][kMaxBlock];     // Σ K_b w_cb
+    double sumQW[3][kMaxBlock];  // Σ q_cb w_cb
+    double fN[3][kMaxBlock];     // Σ q_cb N_b w_cb
+    double fh[3][kMaxBlock];     // Σ hourglass pair forces
+};
+
+// Σ_b K_b w_cb for the strip of kLanes particles from a (block offset i). On a symmetric
+// stencil the mirrored entries pair up: Σ_{k ≥ m/2} (K_{c+δk} − K_{c−δk}) w_k.
+void stressStrip(const ForceView& in, const Stencil& st, Index a, Index i, BlockSums& s) {
+    std::array<const double*, 9> K;
+    for (std::size_t j = 0; j < 9; ++j) K[j] = in.K[j] + a;
+    Lanes acc[3];
+    for (Lanes& l : acc) l.setZero();
+    const Index m = st.size();
+    for (Index k = st.symmetric ? m / 2 : 0; k < m; ++k) {
+        const Index d = st.delta[static_cast<std::size_t>(k)];
+        const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
+        const auto Kb = [&](std::size_t j) {
+            return st.symmetric ? Lanes(loadLanes(K[j] + d) - loadLanes(K[j] - d))
+                                : loadLanes(K[j] + d);
+        };
+        for (std::size_t r = 0; r < 3; ++r)
+            acc[r] += Kb(3 * r) * w[0] + Kb(3 * r + 1) * w[1] + Kb(3 * r + 2) * w[2];
+    }
+    for (int r = 0; r < 3; ++r) storeLanes(s.fK[r] + i, acc[r]);
+}
+
+// Σ q_cb w_cb and Σ q_cb N_b w_cb (forces/artificial_viscosity.hpp: pair means of h, c, ρ).
+void viscousStrip(const ForceView& in, const Stencil& st, Index a, Index i, BlockSums& s) {
+    Lanes sumQW[3], fN[3];
+    for (int r = 0; r < 3; ++r) sumQW[r].setZero(), fN[r].setZero();
+    for (Index k = 0; k < st.size(); ++k) {
+        const Index b = a + st.delta[static_cast<std::size_t>(k)];
+        const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
+        Lanes vx = Lanes::Zero(), x2 = Lanes::Zero();
+        for (std::size_t r = 0; r < 3; ++r) {
+            const Lanes xcb = loadLanes(in.x[r] + a) - loadLanes(in.x[r] + b);
+            vx += (loadLanes(in.v[r] + a) - loadLanes(in.v[r] + b)) * xcb;
+            x2 += xcb * xcb;
         }
-        Vec3 f = K[ic] * sumW + fK;
+        const Lanes q = viscousPairPressure<Lanes>(
+            in.viscosity, vx, x2, 0.5 * (loadLanes(in.h + a) + loadLanes(in.h + b)),
+            0.5 * (loadLanes(in.c + a) + loadLanes(in.c + b)),
+            0.5 * (loadLanes(in.rho + a) + loadLanes(in.rho + b)));
+        for (std::size_t r = 0; r < 3; ++r) {
+            sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
+            fN[r] +=
+                q * (loadLanes(in.N[3 * r] + b) * w[0] + loadLanes(in.N[3 * r + 1] + b) * w[1] +
+                     loadLanes(in.N[3 * r + 2] + b) * w[2]);
+        }
+    }
+    for (int r = 0; r < 3; ++r)
+        storeLanes(s.sumQW[r] + i, sumQW[r]), storeLanes(s.fN[r] + i, fN[r]);
+}
+
+// Hourglass pair forces (forces/hourglass.hpp) with X_cb = X_c − X_b and x_cb = x_c − x_b:
+// both signs flip against X_bc, x_bc, so ē·x keeps its value and the force is +κ x_cb.
+void hourglassStrip(const ForceView& in, const Stencil& st, Index a, Index i, BlockSums& s) {
+    Lanes fh[3];
+    for (Lanes& l : fh) l.setZero();
+    for (Index k = 0; k < st.size(); ++k) {
+        const Index b = a + st.delta[static_cast<std::size_t>(k)];
+        Lanes Y[3], y[3];
+        for (std::size_t r = 0; r < 3; ++r) {
+            Y[r] = loadLanes(in.X[r] + a) - loadLanes(in.X[r] + b);
+            y[r] = loadLanes(in.x[r] + a) - loadLanes(in.x[r] + b);
+        }
+        Lanes predicted = Lanes::Zero();
+        for (std::size_t r = 0; r < 3; ++r)
+            for (std::size_t c = 0; c < 3; ++c)
+                predicted +=
+                    y[r] * (loadLanes(in.F[3 * r + c] + a) + loadLanes(in.F[3 * r + c] + b)) * Y[c];
+        const Lanes pairWeight =
+            0.5 * (loadLanes(in.V + a) + loadLanes(in.V + b)) * st.W[static_cast<std::size_t>(k)];
+        const Lanes kappa = hourglassPairCoefficient<Lanes>(
+            in.alphaE, 0.5 * predicted, y[0] * y[0] + y[1] * y[1] + y[2] * y[2],
+            Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], pairWeight);
+        for (int r = 0; r < 3; ++r) fh[r] += kappa * y[r];
+    }
+    for (int r = 0; r < 3; ++r) storeLanes(s.fh[r] + i, fh[r]);
+}
+
+// The force of particle c from its pair sums: f_c = K_c Σw + Σ K_b w − (N_c Σqw + Σ q N_b w)
+// + f_hourglass (DESIGN §4).
+template <bool Viscous, bool Hourglass>
+void finishParticle(const StressFactors& sf, Index c, const Vec3& sumW, const Vec3& fK,
+                    const Vec3& sumQW, const Vec3& fN, const Vec3& fh, std::vector<Vec3>& force,
+                    ForceParts& parts) {
+    const auto ic = static_cast<std::size_t>(c);
+    Vec3 f = sf.K[ic] * sumW + fK;
+    if constexpr (Viscous) {
+        const Vec3 fv = -(sf.N[ic] * sumQW + fN);
+        parts.viscous[ic] = fv;
+        f += fv;
+    }
+    if constexpr (Hourglass) {
+        parts.hourglass[ic] = fh;
+        f += fh;
+    }
+    force[ic] = f;
+}
+
+// A stencil block strip by strip; the last strip of a block whose length is not a multiple of
+// kLanes overlaps the one before and recomputes (identically) a few particles.
+template <bool Viscous, bool Hourglass>
+void stencilBlockForce(const ForceView& in, const StressFactors& sf, const Stencil& st,
+                       const ParticleBlock& block, std::vector<Vec3>& force, ForceParts& parts) {
+    BlockSums s{};  // terms that are off stay zero
+    const Index len = block.end - block.begin;
+    for (Index i0 = 0; i0 < len; i0 += kLanes) {
+        const Index i = std::min(i0, len - kLanes);
+        stressStrip(in, st, block.begin + i, i, s);
+        if constexpr (Viscous) viscousStrip(in, st, block.begin + i, i, s);
+        if constexpr (Hourglass) hourglassStrip(in, st, block.begin + i, i, s);
+    }
+    for (Index i = 0; i < len; ++i) {
+        const auto col = [&](const double(&a)[3][kMaxBlock]) {
+            return Vec3(a[0][i], a[1][i], a[2][i]);
+        };
+        finishParticle<Viscous, Hourglass>(sf, block.begin + i, st.sumGradW, col(s.fK),
+                                           col(s.sumQW), col(s.fN), col(s.fh), force, parts);
+    }
+}
+
+// The general path: particle c over its CSR list, the same pair formulas one pair at a time.
+template <bool Viscous, bool Hourglass>
+void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleFields& pf,
+                      const StressFactors& sf, Index c, std::vector<Vec3>& force,
+                      ForceParts& parts) {
+    const PairList& P = ref.pairs;
+    const auto ic = static_cast<std::size_t>(c);
+    Vec3 sumW = Vec3::Zero(), fK = Vec3::Zero(), sumQW = Vec3::Zero(), fN = Vec3::Zero();
+    Vec3 fh = Vec3::Zero();
+    const Vec3 xc = pf.x[ic], vc = pf.v[ic], Xc = pf.X[ic];
+    const Mat3 Fc = pf.F[ic];
+    for (Index k = P.begin(c); k < P.end(c); ++k) {
+        const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+        const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];
+        sumW += e.gradW;
+        fK.noalias() += sf.K[b] * e.gradW;
+        const Vec3 xcb = xc - pf.x[b];
         if constexpr (Viscous) {
-            const Vec3 fv = -(N[ic] * sumQW + fN);
-            parts.viscous[ic] = fv;
-            f += fv;
+            const double q =
+                viscousPairPressure(in.viscosity, (vc - pf.v[b]).dot(xcb), xcb.squaredNorm(),
+                                    0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
+                                    0.5 * (in.rho[ic] + in.rho[b]));
+            sumQW += q * e.gradW;
+            fN.noalias() += q * (sf.N[b] * e.gradW);
         }
         if constexpr (Hourglass) {
-            parts.hourglass[ic] = fh;
-            f += fh;
+            const double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
+            fh += hourglassPairForce(in.alphaE, Fc, pf.F[b], pf.X[b] - Xc, -xcb, weight);
         }
-        force[ic] = f;
+    }
+    finishParticle<Viscous, Hourglass>(sf, c, sumW, fK, sumQW, fN, fh, force, parts);
+}
+
+template <bool Viscous, bool Hourglass>
+void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
+               const StressFactors& sf, const StencilBlocks& blocks, std::vector<Vec3>& force,
+               ForceParts& parts) {
+    parallelFor(static_cast<std::ptrdiff_t>(blocks.blocks.size()), [&](std::ptrdiff_t k) {
+        const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
+        if (block.stencil != kNoStencil) {
+            stencilBlockForce<Viscous, Hourglass>(
+                in, sf, blocks.stencils[static_cast<std::size_t>(block.stencil)], block, force,
+                parts);
+            return;
+        }
+        for (Index c = block.begin; c < block.end; ++c)
+            csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, c, force, parts);
     });
 }
 
 }  // namespace
 
-void internalForce(const Reference& ref, const State& state, const StressFactors& factors,
-                   const ForceOptions& options, Index begin, Index end, std::vector<Vec3>& force,
-                   ForceParts& parts) {
+void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
+                   const StencilBlocks& blocks, const ForceOptions& options,
+                   std::vector<Vec3>& force, ForceParts& parts) {
+    const ForceView in{components(factors.K),
+                       components(factors.N),
+                       components(fields.F),
+                       components(fields.x),
+                       components(fields.v),
+                       components(fields.X),
+                       ref.smoothingLength.data(),
+                       factors.soundSpeed.data(),
+                       factors.density.data(),
+                       ref.quadVolume.data(),
+                       ref.pairs.table.data(),
+                       options.viscosity,
+                       options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();
     const bool hourglass = options.hourglass != 0.0;
-    const auto n = static_cast<std::size_t>(ref.size());
-    if (viscous) parts.viscous.resize(n, Vec3::Zero());
-    if (hourglass) parts.hourglass.resize(n, Vec3::Zero());
     if (viscous && hourglass)
-        forceLoop<true, true>(ref, state, factors, options, begin, end, force, parts);
+        forceLoop<true, true>(in, ref, fields, factors, blocks, force, parts);
     else if (viscous)
-        forceLoop<true, false>(ref, state, factors, options, begin, end, force, parts);
+        forceLoop<true, false>(in, ref, fields, factors, blocks, force, parts);
     else if (hourglass)
-        forceLoop<false, true>(ref, state, factors, options, begin, end, force, parts);
+        forceLoop<false, true>(in, ref, fields, factors, blocks, force, parts);
     else
-        forceLoop<false, false>(ref, state, factors, options, begin, end, force, parts);
+        forceLoop<false, false>(in, ref, fields, factors, blocks, force, parts);
 }
 
 }  // namespace gsph

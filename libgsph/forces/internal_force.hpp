@@ -5,20 +5,27 @@
 // particle gathers from its own list only (no scatter), so the loop is thread-count-independent
 // and Σ_c f_c = 0 to round-off. Artificial viscosity adds the pair pressure q_cb through
 // N = V J F^{-T} G the same way; hourglass control adds central pair forces.
+//
+// Speed (issue #2): particles in stencil blocks (neighbors/stencil_blocks.hpp) run the pair
+// terms stencil entry by stencil entry across the block on SoA fields, vectorised across
+// particles; the other particles take the CSR list. Both evaluate the same pair formulas
+// (forces/artificial_viscosity.hpp, forces/hourglass.hpp); the block a particle belongs to is
+// fixed at setup, so results stay independent of the thread count. Allocation-free.
 #pragma once
 
 #include <vector>
 
+#include "core/soa_field.hpp"
 #include "forces/artificial_viscosity.hpp"
+#include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
-#include "particles/state.hpp"
 
 namespace gsph {
 
 /// Per-particle quantities the force loop reads, derived from F and σ each step.
 struct StressFactors {
-    std::vector<Mat3> K;             ///< V J σ F^{-T} G
-    std::vector<Mat3> N;             ///< V J F^{-T} G
+    Mat3Field K;                     ///< V J σ F^{-T} G
+    Mat3Field N;                     ///< V J F^{-T} G
     std::vector<double> soundSpeed;  ///< c [m/s]
     std::vector<double> density;     ///< ρ0/J [kg/m³]
     void resize(std::size_t n) {
@@ -26,6 +33,21 @@ struct StressFactors {
         N.resize(n);
         soundSpeed.resize(n);
         density.resize(n);
+    }
+};
+
+/// SoA copies of the kinematic fields the pair terms read (the State keeps its own layout for
+/// checkpoints); the integrator refreshes x, v and F each step, X once.
+struct ParticleFields {
+    Vec3Field X;  ///< reference position [m]
+    Vec3Field x;  ///< current position [m]
+    Vec3Field v;  ///< velocity [m/s]
+    Mat3Field F;  ///< deformation gradient
+    void resize(std::size_t n) {
+        X.resize(n);
+        x.resize(n);
+        v.resize(n);
+        F.resize(n);
     }
 };
 
@@ -41,9 +63,10 @@ struct ForceParts {
     std::vector<Vec3> hourglass;
 };
 
-/// f_c for c in [begin, end) (one body). Writes force[c]; parts.* only when that term is on.
-void internalForce(const Reference& ref, const State& state, const StressFactors& factors,
-                   const ForceOptions& options, Index begin, Index end, std::vector<Vec3>& force,
-                   ForceParts& parts);
+/// f_c for the particles of one body, partitioned into `blocks` (built from ref.pairs).
+/// Writes force[c]; parts.* only when that term is on (sized by the caller: ref.size()).
+void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
+                   const StencilBlocks& blocks, const ForceOptions& options,
+                   std::vector<Vec3>& force, ForceParts& parts);
 
 }  // namespace gsph

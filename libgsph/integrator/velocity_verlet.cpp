@@ -3,6 +3,7 @@
 
 #include <omp.h>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
 #include <limits>
@@ -15,22 +16,114 @@
 namespace gsph {
 namespace {
 
+// Cofactor matrix cof F = J F^{-T}, columns F₁×F₂, F₂×F₀, F₀×F₁ (F_i: columns of F). The
+// force factors need J F^{-T} only, so taking it directly saves the inverse and its division.
+Mat3 cofactor(const Mat3& F) {
+    Mat3 C;
+    C.col(0) = F.col(1).cross(F.col(2));
+    C.col(1) = F.col(2).cross(F.col(0));
+    C.col(2) = F.col(0).cross(F.col(1));
+    return C;
+}
+
 // Lower bound of the smallest stretch σ_min(F) = 1/‖F^{-1}‖₂ ≥ 1/√(‖F^{-1}‖₁‖F^{-1}‖∞):
-// exact for diagonal F, cheap, and conservative for the time step.
-double smallestStretchBound(const Mat3& Finv) {
-    const double norm1 = Finv.cwiseAbs().colwise().sum().maxCoeff();
-    const double normInf = Finv.cwiseAbs().rowwise().sum().maxCoeff();
-    return 1.0 / std::sqrt(norm1 * normInf);
+// exact for diagonal F, cheap, and conservative for the time step. With F^{-1} = (cof F)^T/J:
+// ‖F^{-1}‖₁‖F^{-1}‖∞ = ‖cof F‖∞‖cof F‖₁/J².
+double smallestStretchBound(const Mat3& cof, double J) {
+    const double norm1 = cof.cwiseAbs().colwise().sum().maxCoeff();
+    const double normInf = cof.cwiseAbs().rowwise().sum().maxCoeff();
+    return J / std::sqrt(norm1 * normInf);
 }
 
 enum class Failure : std::uint8_t { None, Inverted, NotFinite };
+
+// What steps 3–4 read and write, shared by the per-block functions below.
+struct KinematicsStep {
+    const Reference& ref;
+    State& state;
+    StepWorkspace& work;
+    double dt;
+    bool atRest;  // only derive the factors from the current F and σ (initialisation)
+    Mat3 outOfPlane;
+};
+
+// The factors the force loop reads, from F and σ at t_{n+1}:
+// P = J σ F^{-T} (DESIGN §4); N = V J F^{-T} G = V (cof F) G, K = σ N = V P G.
+template <class Model>
+void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const Mat3& F,
+                  MaterialPoint& point) {
+    StepWorkspace& w = s.work;
+    const Mat3 C = cofactor(F);
+    const double J = F.col(0).dot(C.col(0));
+    if (!(J > 0.0)) {
+        w.failure[ia] =
+            static_cast<std::uint8_t>(std::isfinite(J) ? Failure::Inverted : Failure::NotFinite);
+        return;
+    }
+    point.density = model.elastic().density / J;
+    const Mat3 N = s.ref.quadVolume[ia] * C * s.ref.G[ia];
+    w.factors.N.set(ia, N);
+    w.factors.K.set(ia, point.cauchy * N);
+    w.factors.density[ia] = point.density;
+    w.factors.soundSpeed[ia] = model.waveSpeed(point);
+    w.fields.F.set(ia, F);
+    w.lengthScale[ia] = s.ref.spacing[ia] * smallestStretchBound(C, J);
+    w.failure[ia] =
+        static_cast<std::uint8_t>(point.cauchy.allFinite() ? Failure::None : Failure::NotFinite);
+}
+
+// Steps 3–4 for particle a from its θ-gradients of x and v (kinematics/deformation_gradient.hpp):
+// F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the force factors.
+template <class Model>
+void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3& gradX,
+                     const Mat3& gradV) {
+    const auto ia = static_cast<std::size_t>(a);
+    const Mat3& G = s.ref.G[ia];
+    const Mat3 F = gradX * G.transpose() + s.outOfPlane;
+    const Mat3 Fdot = gradV * G.transpose();
+    const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
+    MaterialPoint point;
+    point.cauchy = s.state.cauchy[ia];
+    point.density = model.elastic().density / F.determinant();
+    model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
+    s.state.F[ia] = F;
+    s.state.cauchy[ia] = point.cauchy;
+    storeFactors(model, s, ia, F, point);
+}
+
+template <class Model>
+void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blocks,
+                 const ParticleBlock& block) {
+    if (s.atRest) {
+        for (Index a = block.begin; a < block.end; ++a) {
+            const auto ia = static_cast<std::size_t>(a);
+            MaterialPoint point;
+            point.cauchy = s.state.cauchy[ia];
+            storeFactors(model, s, ia, s.state.F[ia], point);
+        }
+    } else if (block.stencil != kNoStencil) {
+        BlockThetaGradients g;
+        stencilThetaGradients(blocks.stencils[static_cast<std::size_t>(block.stencil)], block.begin,
+                              block.end - block.begin, s.work.fields.x, s.work.fields.v, g);
+        for (Index i = 0; i < block.end - block.begin; ++i)
+            advanceParticle(model, s, block.begin + i, g.gradX(i), g.gradV(i));
+    } else {
+        for (Index a = block.begin; a < block.end; ++a) {
+            Mat3 gradX, gradV;
+            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV);
+            advanceParticle(model, s, a, gradX, gradV);
+        }
+    }
+}
 
 }  // namespace
 
 void StepWorkspace::resize(std::size_t n) {
     factors.resize(n);
+    fields.resize(n);
     force.assign(n, Vec3::Zero());
     lengthScale.assign(n, 0.0);
+    failure.assign(n, 0);
 }
 
 VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
@@ -49,61 +142,46 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
             if (a < 0 || a >= ref.size())
                 throw InputError("constraint '" + c.name + "' names particle " + std::to_string(a) +
                                  " outside [0, " + std::to_string(ref.size()) + ")");
-    work_.resize(static_cast<std::size_t>(ref.size()));
+    const auto n = static_cast<std::size_t>(ref.size());
+    work_.resize(n);
+    for (std::size_t a = 0; a < n; ++a) work_.fields.X.set(a, ref.X[a]);
+    for (const BodyRange& body : bodies_)
+        work_.blocks.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end));
+    if (options_.viscosity.enabled()) work_.parts.viscous.assign(n, Vec3::Zero());
+    if (options_.hourglass != 0.0) work_.parts.hourglass.assign(n, Vec3::Zero());
 }
 
-// Steps 3–4 of Algorithm 1, fused per particle: θ-gradients of x and v, F and Ḟ, the material
-// update, and the factors K, N the force loop reads. atRest: only derive the factors from the
-// current F and σ (initialisation), without advancing the stress.
+// SoA copies of x_a and v_a for the stencil loops (ParticleFields).
+void VelocityVerlet::packKinematics(const State& state, Index a) {
+    const auto ia = static_cast<std::size_t>(a);
+    work_.fields.x.set(ia, state.x[ia]);
+    work_.fields.v.set(ia, state.v[ia]);
+}
+
+// Steps 3–4 of Algorithm 1, fused per particle and run block by block (stencil blocks
+// vectorise the θ-gradient sums): F and Ḟ, the material update, and the factors K, N the
+// force loop reads. Reads the SoA x, v packed by the drift.
 void VelocityVerlet::updateKinematicsAndStress(State& state, double dt, bool atRest) {
-    const Mat3 outOfPlane = ref_.dim.outOfPlane();
-    StressFactors& sf = work_.factors;
-    std::vector<Failure> failure(state.x.size(), Failure::None);
-    for (const BodyRange& body : bodies_) {
+    KinematicsStep s{ref_, state, work_, dt, atRest, ref_.dim.outOfPlane()};
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const StencilBlocks& blocks = work_.blocks[b];
         std::visit(
             [&](const auto& model) {
-                const double rho0 = model.elastic().density;
-                parallelFor(body.end - body.begin, [&](Index i) {
-                    const Index a = body.begin + i;
-                    const auto ia = static_cast<std::size_t>(a);
-                    Mat3 F = state.F[ia];
-                    MaterialPoint point;
-                    point.cauchy = state.cauchy[ia];
-                    if (!atRest) {
-                        Mat3 gradX, gradV;
-                        thetaGradients(ref_, a, state.x.data(), state.v.data(), gradX, gradV);
-                        const Mat3& G = ref_.G[ia];
-                        F = gradX * G.transpose() + outOfPlane;
-                        const Mat3 Fdot = gradV * G.transpose();
-                        const Mat3 L = Fdot * (0.5 * (state.F[ia] + F)).inverse();
-                        const double J = F.determinant();
-                        point.density = rho0 / J;
-                        model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()),
-                                     dt);
-                        state.F[ia] = F;
-                        state.cauchy[ia] = point.cauchy;
-                    }
-                    const double J = F.determinant();
-                    if (!(J > 0.0)) {
-                        failure[ia] = std::isfinite(J) ? Failure::Inverted : Failure::NotFinite;
-                        return;
-                    }
-                    point.density = rho0 / J;
-                    const Mat3 Finv = F.inverse();
-                    // P = J σ F^{-T} (DESIGN §4); N = V J F^{-T} G, K = σ N = V P G.
-                    sf.N[ia] = (ref_.quadVolume[ia] * J) * Finv.transpose() * ref_.G[ia];
-                    sf.K[ia] = point.cauchy * sf.N[ia];
-                    sf.density[ia] = point.density;
-                    sf.soundSpeed[ia] = model.waveSpeed(point);
-                    work_.lengthScale[ia] = ref_.spacing[ia] * smallestStretchBound(Finv);
-                    if (!point.cauchy.allFinite()) failure[ia] = Failure::NotFinite;
-                });
+                parallelFor(
+                    static_cast<std::ptrdiff_t>(blocks.blocks.size()), [&](std::ptrdiff_t k) {
+                        updateBlock(model, s, blocks, blocks.blocks[static_cast<std::size_t>(k)]);
+                    });
             },
-            *body.material);
+            *bodies_[b].material);
     }
-    for (std::size_t a = 0; a < failure.size(); ++a) {
-        if (failure[a] == Failure::None) continue;
-        const std::string what = failure[a] == Failure::Inverted
+    throwOnFailure(state);
+}
+
+void VelocityVerlet::throwOnFailure(const State& state) const {
+    for (std::size_t a = 0; a < work_.failure.size(); ++a) {
+        const auto f = static_cast<Failure>(work_.failure[a]);
+        if (f == Failure::None) continue;
+        const std::string what = f == Failure::Inverted
                                      ? "inverted particle (J ≤ 0)"
                                      : "non-finite deformation or stress (NaN/Inf)";
         throw NumericalError(what + " at particle " + std::to_string(a) +
@@ -113,12 +191,13 @@ void VelocityVerlet::updateKinematicsAndStress(State& state, double dt, bool atR
 }
 
 void VelocityVerlet::computeAccelerations(State& state) {
-    for (const BodyRange& body : bodies_) {
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const BodyRange& body = bodies_[b];
         ForceOptions fo;
         fo.viscosity = options_.viscosity;
         fo.hourglass = options_.hourglass;
         fo.youngsModulus = elasticConstants(*body.material).youngsModulus;
-        internalForce(ref_, state, work_.factors, fo, body.begin, body.end, work_.force,
+        internalForce(ref_, work_.fields, work_.factors, work_.blocks[b], fo, work_.force,
                       work_.parts);
     }
     parallelFor(ref_.size(), [&](Index a) {
@@ -135,12 +214,14 @@ void VelocityVerlet::applyConstraints(State& state, double t) {
         }
 }
 
-double VelocityVerlet::nonConservativePower(const State& state,
-                                            const std::vector<Vec3>& part) const {
+double VelocityVerlet::nonConservativePower(const State& state, const std::vector<Vec3>& part) {
     if (part.empty()) return 0.0;
-    return deterministicSum(ref_.size(), 0.0, [&](Index a) {
-        return part[static_cast<std::size_t>(a)].dot(state.v[static_cast<std::size_t>(a)]);
-    });
+    return deterministicSum(
+        ref_.size(), 0.0,
+        [&](Index a) {
+            return part[static_cast<std::size_t>(a)].dot(state.v[static_cast<std::size_t>(a)]);
+        },
+        work_.partialSums);
 }
 
 // Power of the reactions that keep constrained particles on their prescribed velocity:
@@ -177,6 +258,7 @@ double VelocityVerlet::stableTimeStep(const State& state) const {
 
 void VelocityVerlet::initialize(State& state) {
     applyConstraints(state, state.time);
+    parallelFor(ref_.size(), [&](Index a) { packKinematics(state, a); });
     updateKinematicsAndStress(state, 0.0, true);
     computeAccelerations(state);
     state.dt = stableTimeStep(state);
@@ -199,6 +281,7 @@ void VelocityVerlet::step(State& state) {
     parallelFor(n, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.x[ia] += dt * state.v[ia];
+        packKinematics(state, a);
     });
     // 3–5: kinematics, stress, forces at t_{n+1} (viscosity sees v_{n+½}).
     state.time += dt;

@@ -45,9 +45,13 @@ struct PhaseTimes {
 /// Scratch arrays of a step, sized once (no allocation inside the step).
 struct StepWorkspace {
     StressFactors factors;
+    ParticleFields fields;              ///< SoA x, v, F, X for the pair loops
+    std::vector<StencilBlocks> blocks;  ///< per body: stencil and CSR blocks (issue #2)
     ForceParts parts;
     std::vector<Vec3> force;
-    std::vector<double> lengthScale;  ///< current spacing ℓ_a
+    std::vector<double> lengthScale;    ///< current spacing ℓ_a
+    std::vector<std::uint8_t> failure;  ///< per particle: why steps 3–4 failed (0: they did not)
+    std::vector<double> partialSums;    ///< scratch of deterministicSum
     void resize(std::size_t n);
 };
 
@@ -66,9 +70,11 @@ class VelocityVerlet {
 
   private:
     void updateKinematicsAndStress(State& state, double dt, bool atRest);
+    void throwOnFailure(const State& state) const;
+    void packKinematics(const State& state, Index a);
     void computeAccelerations(State& state);
     void applyConstraints(State& state, double t);
-    double nonConservativePower(const State& state, const std::vector<Vec3>& part) const;
+    double nonConservativePower(const State& state, const std::vector<Vec3>& part);
     double boundaryPower(const State& state) const;
     double stableTimeStep(const State& state) const;
 

@@ -5,10 +5,17 @@
 // Since M = ∂X/∂θ is taken by the same sum (spaces/metric.hpp), F = (∂x/∂θ)(∂X/∂θ)^{-1} and
 // F = I holds to round-off at rest; an affine motion x = A X + c gives F = A to round-off.
 // Broken bonds leave the pair list (and G is recomputed), so both properties survive fracture.
+// Two evaluations of the same sum: thetaGradients (one particle, its CSR list) and
+// stencilThetaGradients (a block of particles sharing one stencil, SoA x and v, vectorised
+// across the block; issue #2). Both accumulate Σ_b x_b ⊗ w_ab in list order, then subtract
+// x_a ⊗ Σ_b w_ab; on a symmetric stencil the block sums (x_{a+δ} − x_{a−δ}) ⊗ w over mirrored
+// pairs instead (neighbors/stencil_blocks.hpp), equal up to round-off.
 #pragma once
 
 #include <vector>
 
+#include "core/soa_field.hpp"
+#include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
 
 namespace gsph {
@@ -35,6 +42,28 @@ inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const V
     gradX = sx - x[ia] * sw.transpose();
     gradV = sv - v[ia] * sw.transpose();
 }
+
+/// θ-gradients of one block, component-major (row r, column c at [3r + c][i]) so that the
+/// accumulation loops vectorise across the block's particles i.
+struct BlockThetaGradients {
+    double x[9][kMaxBlock];
+    double v[9][kMaxBlock];
+    Mat3 gradX(Index i) const { return at(x, i); }
+    Mat3 gradV(Index i) const { return at(v, i); }
+
+  private:
+    static Mat3 at(const double (&g)[9][kMaxBlock], Index i) {
+        Mat3 m;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) m(r, c) = g[3 * r + c][i];
+        return m;
+    }
+};
+
+/// thetaGradients for the particles [a0, a0 + len) of a stencil block
+/// (kMinStencilRun ≤ len ≤ kMaxBlock): b = a + st.delta[k], w_ab = st.gradW[k].
+void stencilThetaGradients(const Stencil& st, Index a0, Index len, const Vec3Field& x,
+                           const Vec3Field& v, BlockThetaGradients& g);
 
 /// F for every particle from positions x (used by tests and diagnostics; the integrator fuses
 /// this loop with the stress update).

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <fstream>
 #include <string>
 
@@ -68,9 +69,12 @@ int main(int argc, char** argv) {
         std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
 
     const auto t0 = std::chrono::steady_clock::now();
+    const std::clock_t c0 = std::clock();
     for (int s = 0; s < steps; ++s) sim.step();
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    // Process CPU time (all threads): less sensitive than wall time to other load on the machine.
+    const double cpuSeconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
 
     const double n = sim.reference().size();
     const double pairs = sim.reference().pairs.pairs();
@@ -85,6 +89,8 @@ int main(int argc, char** argv) {
     std::printf("setup                %.2f s (pairs, metric, first forces)\n", setupSeconds);
     std::printf("steps                %d in %.3f s\n", steps, seconds);
     std::printf("particle-steps/s     %.3e  (%.3e per thread)\n", rate, rate / threads);
+    std::printf("per CPU second       %.3e  (particle-steps per second of process CPU time)\n",
+                n * steps / cpuSeconds);
     std::printf("peak bytes/particle  %.0f  (process peak RSS growth / particles)\n",
                 (peakResidentBytes() - baseline) / n);
     std::printf("pair-list bytes/particle %.0f\n", sim.reference().pairs.bytes() / n);

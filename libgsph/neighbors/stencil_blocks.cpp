@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: MIT
+#include "neighbors/stencil_blocks.hpp"
+
+#include <algorithm>
+#include <map>
+
+namespace gsph {
+namespace {
+
+// The neighbour list of a, relative to a: entries (b − a) then kernel ids.
+std::vector<Index> relativeList(const PairList& P, Index a) {
+    std::vector<Index> key;
+    key.reserve(2 * static_cast<std::size_t>(P.end(a) - P.begin(a)));
+    for (Index k = P.begin(a); k < P.end(a); ++k)
+        key.push_back(P.neighbor[static_cast<std::size_t>(k)] - a);
+    for (Index k = P.begin(a); k < P.end(a); ++k)
+        key.push_back(P.kernelId[static_cast<std::size_t>(k)]);
+    return key;
+}
+
+// True when b's list is a's list shifted by b − a (same length, deltas and kernel entries).
+bool sameStencil(const PairList& P, Index a, Index b) {
+    const Index n = P.end(a) - P.begin(a);
+    if (n == 0 || P.end(b) - P.begin(b) != n) return false;
+    for (Index k = 0; k < n; ++k) {
+        const auto ka = static_cast<std::size_t>(P.begin(a) + k);
+        const auto kb = static_cast<std::size_t>(P.begin(b) + k);
+        if (P.neighbor[ka] - a != P.neighbor[kb] - b || P.kernelId[ka] != P.kernelId[kb])
+            return false;
+    }
+    return true;
+}
+
+void appendBlocks(std::vector<ParticleBlock>& blocks, Index begin, Index end, Index stencil) {
+    for (Index b = begin; b < end; b += kMaxBlock)
+        blocks.push_back({b, std::min(end, b + kMaxBlock), stencil});
+}
+
+Stencil makeStencil(const PairList& P, Index a) {
+    Stencil s;
+    for (Index k = P.begin(a); k < P.end(a); ++k) {
+        const auto ik = static_cast<std::size_t>(k);
+        s.delta.push_back(P.neighbor[ik] - a);
+        s.kernelId.push_back(P.kernelId[ik]);
+        const KernelEntry& e = P.table[static_cast<std::size_t>(P.kernelId[ik])];
+        s.gradW.push_back(e.gradW);
+        s.W.push_back(e.W);
+        s.sumGradW += e.gradW;
+    }
+    const std::size_t m = s.delta.size();
+    s.symmetric = m % 2 == 0;
+    for (std::size_t k = 0; k < m && s.symmetric; ++k)
+        s.symmetric = s.delta[m - 1 - k] == -s.delta[k] && s.gradW[m - 1 - k] == -s.gradW[k] &&
+                      s.W[m - 1 - k] == s.W[k];
+    if (s.symmetric) s.sumGradW.setZero();  // mirrored pairs cancel exactly
+    return s;
+}
+
+}  // namespace
+
+std::size_t StencilBlocks::bytes() const {
+    std::size_t b = blocks.capacity() * sizeof(ParticleBlock);
+    for (const Stencil& s : stencils)
+        b += sizeof(Stencil) + (s.delta.capacity() + s.kernelId.capacity()) * sizeof(Index) +
+             s.gradW.capacity() * sizeof(Vec3) + s.W.capacity() * sizeof(double);
+    return b;
+}
+
+StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end) {
+    StencilBlocks out;
+    std::map<std::vector<Index>, Index> known;  // relative list → stencil id
+    Index csrBegin = begin;                     // start of the pending CSR stretch
+    for (Index a = begin; a < end;) {
+        Index runEnd = a + 1;
+        while (runEnd < end && sameStencil(pairs, a, runEnd)) ++runEnd;
+        if (runEnd - a < kMinStencilRun) {
+            a = runEnd;
+            continue;
+        }
+        appendBlocks(out.blocks, csrBegin, a, kNoStencil);
+        const auto [it, inserted] =
+            known.try_emplace(relativeList(pairs, a), static_cast<Index>(out.stencils.size()));
+        if (inserted) out.stencils.push_back(makeStencil(pairs, a));
+        appendBlocks(out.blocks, a, runEnd, it->second);
+        csrBegin = a = runEnd;
+    }
+    appendBlocks(out.blocks, csrBegin, end, kNoStencil);
+    return out;
+}
+
+}  // namespace gsph

@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Blocks of consecutive particles that share one neighbour stencil (DESIGN §3, issue #2).
+//
+// On a θ-lattice, the interior particles of a space (and the particles of one face or edge
+// row) have the same neighbour list up to a shift by their own index: b = a + delta_k with the
+// same kernel table entry for every k. Such a run of particles is one block with one Stencil,
+// and the pair loops can run stencil entry by stencil entry across the whole block, reading
+// each neighbour field contiguously (vectorisable across particles with SoA data). Everything
+// else (lattice corners, periodic seams, overset and off-lattice pairs) is a block without
+// stencil that takes the general CSR path. The partition is read off the PairList itself, so
+// it holds for any pair list and never assumes a lattice.
+//
+// Invariants: blocks cover [begin, end) in order without gaps or overlap, at most kMaxBlock
+// particles each; for a stencil block and every a in it, the CSR list of a is exactly
+// {(a + delta[k], kernelId[k])} in the same order. Built once per body; read-only afterwards.
+#pragma once
+
+#include <vector>
+
+#include "core/types.hpp"
+#include "neighbors/pair_list.hpp"
+
+namespace gsph {
+
+/// Particles per block: the stencil kernels keep per-particle accumulators of one block on the
+/// stack (18 doubles per particle in the kinematics), which must stay in L1.
+inline constexpr Index kMaxBlock = 64;
+
+/// Shortest run that becomes a stencil block; shorter runs take the CSR path (they gain no
+/// vectorisation and would only multiply stencils).
+inline constexpr Index kMinStencilRun = 4;
+
+struct Stencil {
+    std::vector<Index> delta;      ///< b − a per entry, ascending (the CSR order)
+    std::vector<Index> kernelId;   ///< into PairList::table, per entry
+    std::vector<Vec3> gradW;       ///< table[kernelId[k]].gradW, packed for the hot loops
+    std::vector<double> W;         ///< table[kernelId[k]].W
+    Vec3 sumGradW = Vec3::Zero();  ///< Σ_k gradW[k], in entry order; exactly 0 if symmetric
+    /// Entry size()−1−k is entry k mirrored: delta and gradW negated exactly (the full
+    /// interior stencil). Then Σ_k w_k = 0 exactly and Σ_k f_{a+δk} ⊗ w_k can be summed over
+    /// the mirrored pairs as Σ_{k ≥ size()/2} (f_{a+δk} − f_{a−δk}) ⊗ w_k: half the work.
+    bool symmetric = false;
+    Index size() const { return static_cast<Index>(delta.size()); }
+};
+
+inline constexpr Index kNoStencil = -1;
+
+struct ParticleBlock {
+    Index begin = 0, end = 0;
+    Index stencil = kNoStencil;  ///< into StencilBlocks::stencils, or kNoStencil (CSR path)
+};
+
+struct StencilBlocks {
+    std::vector<Stencil> stencils;
+    std::vector<ParticleBlock> blocks;
+    std::size_t bytes() const;
+};
+
+/// Partitions the particles [begin, end) of one body into stencil and CSR blocks.
+StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end);
+
+}  // namespace gsph
