@@ -28,7 +28,9 @@ int cornerOf(const std::array<Index, 8>& hex, Index node) {
 }
 
 /// gmsh local node at gmsh corner bits c (kGmshCorner is its own inverse).
-Index nodeAtCorner(const std::array<Index, 8>& hex, int c) { return hex[kGmshCorner[c]]; }
+Index nodeAtCorner(const std::array<Index, 8>& hex, int c) {
+    return hex[kGmshCorner[c]];
+}
 
 /// Corner labels (block frame) of hex `next`, entered through the face of the current hex whose
 /// corners have bit d set (labels K). Returns false if those four nodes are not a face of `next`.
@@ -114,7 +116,8 @@ BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
     std::vector<Int3> cell(count, Int3{-1, -1, -1});
     std::vector<std::array<Index, 8>> corner(count);
     const int flip = cornerOf(mesh.hexes[startHex], start);
-    for (int c = 0; c < 8; ++c) corner[startHex - first][c ^ flip] = nodeAtCorner(mesh.hexes[startHex], c);
+    for (int c = 0; c < 8; ++c)
+        corner[startHex - first][c ^ flip] = nodeAtCorner(mesh.hexes[startHex], c);
     cell[startHex - first] = {0, 0, 0};
 
     // 3. Walk +i, +j, +k from every reached hex, carrying the corner labels across faces.
@@ -157,8 +160,9 @@ BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
         }
     }
     if (reached != count) {
-        notStructured(mesh, volume, std::to_string(count - reached) +
-                                        " hexahedra cannot be reached from its corner");
+        notStructured(
+            mesh, volume,
+            std::to_string(count - reached) + " hexahedra cannot be reached from its corner");
     }
     const std::size_t cells = std::size_t(extent[0]) * extent[1] * extent[2];
     if (cells != count) {

@@ -38,10 +38,11 @@ std::vector<Index> assignBodies(const HexMesh& mesh, std::vector<BodyInfo>& bodi
             holdsHexes = true;
             Index& body = bodyOfVolume[it->second];
             if (body >= 0 && body != static_cast<Index>(b)) {
-                throw MeshError(mesh.source + ": volume " + std::to_string(tag) +
-                                " is in two physical volume groups, " +
-                                groupLabel(mesh.volumeGroups[body].name, mesh.volumeGroups[body].tag) +
-                                " and " + groupLabel(g.name, g.tag) + "; a volume belongs to one body");
+                throw MeshError(
+                    mesh.source + ": volume " + std::to_string(tag) +
+                    " is in two physical volume groups, " +
+                    groupLabel(mesh.volumeGroups[body].name, mesh.volumeGroups[body].tag) +
+                    " and " + groupLabel(g.name, g.tag) + "; a volume belongs to one body");
             }
             body = static_cast<Index>(b);
         }
@@ -101,7 +102,8 @@ void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
         std::sort(members.begin(), members.end());
         members.erase(std::unique(members.begin(), members.end()), members.end());
         if (members.empty()) {
-            out.warnings.push_back("particle set '" + name + "' is empty (its surfaces hold no "
+            out.warnings.push_back("particle set '" + name +
+                                   "' is empty (its surfaces hold no "
                                    "quadrilaterals)");
         }
     }
@@ -152,18 +154,23 @@ Conversion convertHexMesh(const HexMesh& mesh) {
                     for (int i = 0; i < block.cells[0]; ++i) {
                         HexCorners x;
                         for (int c = 0; c < 8; ++c) {
-                            x[c] = mesh.nodes[block.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))];
+                            x[c] = mesh.nodes[block.node(i + (c & 1), j + (c >> 1 & 1),
+                                                         k + (c >> 2 & 1))];
                         }
                         const Index h = block.hex(i, j, k);
                         if (!(minCornerJacobian(x) > 0.0)) {
-                            throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                                            " in volume " + std::to_string(block.volumeTag) +
+                            throw MeshError(mesh.source + ": element " +
+                                            std::to_string(mesh.hexTags[h]) + " in volume " +
+                                            std::to_string(block.volumeTag) +
                                             " is inverted (the structured grid folds there)");
                         }
                         const Int3 c = space.cellOf(e, {i, j, k});
-                        const std::size_t a =
-                            offset + c[0] + std::size_t(space.cells[0]) * (c[1] + std::size_t(space.cells[1]) * c[2]);
-                        if (filled[a]) throw MeshError(mesh.source + ": internal error: two hexahedra at one lattice cell");
+                        const std::size_t a = offset + c[0] +
+                                              std::size_t(space.cells[0]) *
+                                                  (c[1] + std::size_t(space.cells[1]) * c[2]);
+                        if (filled[a])
+                            throw MeshError(mesh.source +
+                                            ": internal error: two hexahedra at one lattice cell");
                         filled[a] = 1;
                         pf.X[a] = hexCentre(x);
                         pf.volume[a] = hexVolume(x);
@@ -183,7 +190,8 @@ Conversion convertHexMesh(const HexMesh& mesh) {
         offset += std::size_t(space.cells[0]) * space.cells[1] * space.cells[2];
     }
     if (offset != n || std::find(filled.begin(), filled.end(), 0) != filled.end()) {
-        throw MeshError(mesh.source + ": internal error: the spaces do not hold every hexahedron once");
+        throw MeshError(mesh.source +
+                        ": internal error: the spaces do not hold every hexahedron once");
     }
     stats.sharedFaces = glued.sharedFaces;
     stats.honouredFaces = glued.honouredFaces;

@@ -65,15 +65,17 @@ class ParameterWrapper {
         : path_(input) {
         if (parameters.empty()) return;
         static std::atomic<int> counter{0};
-        path_ = std::filesystem::temp_directory_path() /
-                ("gsph-preproc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".geo");
+        path_ =
+            std::filesystem::temp_directory_path() / ("gsph-preproc-" + std::to_string(::getpid()) +
+                                                      "-" + std::to_string(counter++) + ".geo");
         std::ofstream out(path_);
         for (const auto& [name, value] : parameters) {
-            const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
-                               std::all_of(name.begin(), name.end(), [](unsigned char c) {
-                                   return std::isalnum(c) || c == '_';
-                               });
-            if (!valid) throw InputError(input.string() + ": '" + name + "' is not a parameter name");
+            const bool valid =
+                !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                std::all_of(name.begin(), name.end(),
+                            [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+            if (!valid)
+                throw InputError(input.string() + ": '" + name + "' is not a parameter name");
             char text[64];
             std::snprintf(text, sizeof text, "%.17g", value);
             out << name << " = " << text << ";\n";
@@ -114,7 +116,8 @@ void collectWarnings(std::vector<std::string>& warnings) {
     gmsh::logger::get(log);
     const std::string prefix = "Warning: ";
     for (const std::string& line : log) {
-        if (line.rfind(prefix, 0) == 0) warnings.push_back("gmsh: " + oneLine(line.substr(prefix.size())));
+        if (line.rfind(prefix, 0) == 0)
+            warnings.push_back("gmsh: " + oneLine(line.substr(prefix.size())));
     }
 }
 
@@ -133,7 +136,8 @@ class NodeIds {
             std::vector<Vec3>& nodes) {
         std::vector<std::size_t> order(tags.size());
         std::iota(order.begin(), order.end(), std::size_t{0});
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
         nodes.resize(tags.size());
         const std::size_t maxTag = tags.empty() ? 0 : tags[order.back()];
         dense_ = maxTag <= 2 * tags.size() + 1024;
@@ -169,8 +173,8 @@ void appendElements(const std::string& source, const std::vector<std::size_t>& n
         for (std::size_t k = 0; k < N; ++k) {
             element[k] = ids(nodeTags[e + k]);
             if (element[k] < 0) {
-                throw MeshError(source + ": an element refers to node " + std::to_string(nodeTags[e + k]) +
-                                ", which does not exist");
+                throw MeshError(source + ": an element refers to node " +
+                                std::to_string(nodeTags[e + k]) + ", which does not exist");
             }
         }
         out.push_back(element);
@@ -220,7 +224,8 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
         gmsh::model::getPhysicalName(dim, tag, name);
         std::vector<int> entities;
         gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-        const std::string label = name.empty() ? "(tag " + std::to_string(tag) + ")" : "'" + name + "'";
+        const std::string label =
+            name.empty() ? "(tag " + std::to_string(tag) + ")" : "'" + name + "'";
         if (dim == 3) {
             mesh.volumeGroups.push_back({tag, name, entities});
         } else if (dim == 2) {
@@ -232,7 +237,8 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
                 for (std::size_t t = 0; t < types.size(); ++t) {
                     if (types[t] != kQuad4) {
                         throw MeshError(source + ": physical surface " + label + " (surface " +
-                                        std::to_string(surface) + ") holds " + elementName(types[t]) +
+                                        std::to_string(surface) + ") holds " +
+                                        elementName(types[t]) +
                                         " elements; particle sets need 4-node quadrangles "
                                         "(Recombine Surface)");
                     }
@@ -256,9 +262,11 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
     if (!std::filesystem::exists(input, ec)) throw InputError(source + ": no such file");
     if (!std::filesystem::is_regular_file(input, ec)) throw InputError(source + ": not a file");
     std::string ext = input.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (ext != ".geo" && ext != ".msh") {
-        throw InputError(source + ": unsupported input '" + ext + "' (expected a .geo or .msh file)");
+        throw InputError(source + ": unsupported input '" + ext +
+                         "' (expected a .geo or .msh file)");
     }
     if (ext == ".msh" && !options.parameters.empty()) {
         throw InputError(source + ": parameters (--set) apply to .geo files only");

@@ -46,7 +46,8 @@ double minCornerJacobian(const HexCorners& x) {
         Mat3 edges;
         int flips = 0;
         for (int a = 0; a < 3; ++a) {
-            edges.col(a) = x[static_cast<std::size_t>(c ^ (1 << a))] - x[static_cast<std::size_t>(c)];
+            edges.col(a) =
+                x[static_cast<std::size_t>(c ^ (1 << a))] - x[static_cast<std::size_t>(c)];
             flips += c >> a & 1;
         }
         const double det = (flips % 2 == 0 ? 1.0 : -1.0) * edges.determinant() / 8.0;

@@ -40,9 +40,8 @@ std::pair<std::string, double> parseParameter(const std::string& text) {
     const std::size_t eq = text.find('=');
     const std::string name = text.substr(0, eq);
     const bool nameOk = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
-                        std::all_of(name.begin(), name.end(), [](unsigned char c) {
-                            return std::isalnum(c) || c == '_';
-                        });
+                        std::all_of(name.begin(), name.end(),
+                                    [](unsigned char c) { return std::isalnum(c) || c == '_'; });
     double value = 0.0;
     std::size_t used = 0;
     try {
@@ -99,8 +98,8 @@ int main(int argc, char** argv) {
             const gsph::preproc::Timings timings{seconds(start, read), seconds(read, converted),
                                                  seconds(converted, written),
                                                  seconds(start, written)};
-            gsph::preproc::printSummary(std::cout, output, conversion.particles,
-                                        conversion.stats, timings);
+            gsph::preproc::printSummary(std::cout, output, conversion.particles, conversion.stats,
+                                        timings);
         }
         return 0;
     } catch (const std::exception& e) {

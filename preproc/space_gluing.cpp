@@ -17,7 +17,9 @@ struct Glue {
     LatticeTransform bToA;
 };
 
-Index nodeAt(const BlockLattice& blk, const Int3& x) { return blk.node(x[0], x[1], x[2]); }
+Index nodeAt(const BlockLattice& blk, const Int3& x) {
+    return blk.node(x[0], x[1], x[2]);
+}
 
 /// Node coordinates of point (u, v) on side (axis, end) of a block.
 Int3 sideNode(const BlockLattice& blk, int axis, int end, int u, int v) {
@@ -62,7 +64,8 @@ std::optional<LatticeTransform> matchSides(const BlockLattice& A, int dA, int eA
                     for (int v = 0; v <= nvB && same; ++v) {
                         const Int3 xb = sideNode(B, dB, eB, u, v);
                         const Int3 xa = T.node(xb);
-                        for (int d = 0; d < 3; ++d) same = same && xa[d] >= 0 && xa[d] <= A.cells[d];
+                        for (int d = 0; d < 3; ++d)
+                            same = same && xa[d] >= 0 && xa[d] <= A.cells[d];
                         same = same && xa[dA] == eA * A.cells[dA] && nodeAt(A, xa) == nodeAt(B, xb);
                     }
                 }
@@ -95,8 +98,8 @@ std::vector<Glue> findGlues(const std::vector<BlockLattice>& blocks,
                 const Side& s = sides[p];
                 const Side& r = sides[q];
                 if (s.block == r.block || bodyOfBlock[s.block] != bodyOfBlock[r.block]) continue;
-                const auto T = matchSides(blocks[s.block], s.axis, s.end, blocks[r.block], r.axis,
-                                          r.end);
+                const auto T =
+                    matchSides(blocks[s.block], s.axis, s.end, blocks[r.block], r.axis, r.end);
                 if (T) glues.push_back({s.block, r.block, *T});
             }
         }
@@ -107,7 +110,9 @@ std::vector<Glue> findGlues(const std::vector<BlockLattice>& blocks,
     return glues;
 }
 
-int floorMod(int x, int p) { return ((x % p) + p) % p; }
+int floorMod(int x, int p) {
+    return ((x % p) + p) % p;
+}
 
 /// Do intervals [lo1, lo1+len1) and [lo2, lo2+len2) meet (modulo p when p > 0)?
 bool intervalsMeet(int lo1, int len1, int lo2, int len2, int p) {
@@ -192,7 +197,8 @@ class Search {
             for (std::size_t y = x + 1; y < members.size(); ++y) {
                 const Int3 lo2 = lower(p, members[y]), e2 = extent(p, members[y]);
                 bool meet = true;
-                for (int d = 0; d < 3; ++d) meet = meet && intervalsMeet(lo1[d], e1[d], lo2[d], e2[d], P[d]);
+                for (int d = 0; d < 3; ++d)
+                    meet = meet && intervalsMeet(lo1[d], e1[d], lo2[d], e2[d], P[d]);
                 if (meet) return false;
             }
         }
@@ -236,7 +242,8 @@ class Search {
             long cells = 0;
             for (std::size_t c = 0; c < blocks_.size(); ++c) {
                 if (p.rep[c] != static_cast<Index>(r)) continue;
-                const Int3 l = lower(p, static_cast<Index>(c)), e = extent(p, static_cast<Index>(c));
+                const Int3 l = lower(p, static_cast<Index>(c)),
+                           e = extent(p, static_cast<Index>(c));
                 for (int d = 0; d < 3; ++d) {
                     lo[d] = std::min(lo[d], l[d]);
                     hi[d] = std::max(hi[d], l[d] + e[d]);

@@ -28,9 +28,9 @@ inline constexpr long kMaxSearchSteps = 200000;
 
 struct GluedSpace {
     Index body = 0;
-    std::vector<Index> blocks;               ///< ascending block indices
-    std::vector<LatticeTransform> toSpace;   ///< per entry of `blocks`: block → space nodes
-    Int3 cells = {0, 0, 0};                  ///< space extent (the period along periodic axes)
+    std::vector<Index> blocks;              ///< ascending block indices
+    std::vector<LatticeTransform> toSpace;  ///< per entry of `blocks`: block → space nodes
+    Int3 cells = {0, 0, 0};                 ///< space extent (the period along periodic axes)
     std::array<bool, 3> periodic = {false, false, false};
 
     /// Space cell of a block cell, wrapped into [0, cells) along periodic axes.
@@ -39,8 +39,8 @@ struct GluedSpace {
 
 struct GluingResult {
     std::vector<GluedSpace> spaces;
-    int sharedFaces = 0;   ///< faces shared by two blocks of one body
-    int honouredFaces = 0;  ///< of which inside one space
+    int sharedFaces = 0;     ///< faces shared by two blocks of one body
+    int honouredFaces = 0;   ///< of which inside one space
     bool exhaustive = true;  ///< false if the search stopped at kMaxSearchSteps
 };
 

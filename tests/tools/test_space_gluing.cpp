@@ -15,7 +15,9 @@ namespace {
 
 using test::MeshBuilder;
 
-Vec3 unitPosition(const MeshBuilder::Key& k) { return Vec3(k[0], k[1], k[2]); }
+Vec3 unitPosition(const MeshBuilder::Key& k) {
+    return Vec3(k[0], k[1], k[2]);
+}
 
 struct Glued {
     HexMesh mesh;
@@ -118,7 +120,8 @@ TEST(SpaceGluing, GridOfBlocksFormsOneSpace) {
     for (int c = 0; c < 2; ++c) {
         for (int b = 0; b < 3; ++b) {
             for (int a = 0; a < 3; ++a) {
-                builder.addBlock(tag++, {2, 3, 1}, test::offsetKey({2 * a, 3 * b, c}), unitPosition);
+                builder.addBlock(tag++, {2, 3, 1}, test::offsetKey({2 * a, 3 * b, c}),
+                                 unitPosition);
             }
         }
     }
@@ -162,7 +165,9 @@ TEST(SpaceGluing, TurnedBlockStillGlues) {
 /// faces, so the blocks are conforming.
 void addOgrid(MeshBuilder& builder, int n, int nr, int nz, bool withCore) {
     const double c = 0.4, R = 1.0;
-    auto corePoint = [=](int i, int j) { return Vec3(-c + 2 * c * i / n, -c + 2 * c * j / n, 0.0); };
+    auto corePoint = [=](int i, int j) {
+        return Vec3(-c + 2 * c * i / n, -c + 2 * c * j / n, 0.0);
+    };
     // Core boundary, counterclockwise from (c, -c), at angular parameter a ∈ [0, 4n).
     auto boundaryKey = [=](int a) {
         const int q = a / n, t = a % n;
@@ -189,8 +194,12 @@ void addOgrid(MeshBuilder& builder, int n, int nr, int nz, bool withCore) {
         return Vec3((1 - s) * inner + s * outer + Vec3(0, 0, 0.1 * k[2]));
     };
     if (withCore) {
-        builder.addBlock(1, {n, n, nz}, [](int i, int j, int k) { return MeshBuilder::Key{i, j, k}; },
-                         position);
+        builder.addBlock(
+            1, {n, n, nz},
+            [](int i, int j, int k) {
+                return MeshBuilder::Key{i, j, k};
+            },
+            position);
     }
     for (int q = 0; q < 4; ++q) builder.addBlock(2 + q, {nr, n, nz}, key(q), position);
 }
