@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <functional>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace gsph::preproc {
 
