@@ -31,6 +31,10 @@ class GmshSession {
         try {
             gmsh::initialize(0, nullptr, false);
             gmsh::option::setNumber("General.Terminal", 0);
+            // Log errors instead of throwing them: gmsh 4.8 throws from inside its OpenMP
+            // meshing loops, where an exception cannot be caught (std::terminate). Errors are
+            // read back from the log after each call (firstError).
+            gmsh::option::setNumber("General.AbortOnError", 0);
             gmsh::onelab::clear();
             gmsh::logger::start();
         } catch (...) {
@@ -109,6 +113,17 @@ std::string gmshReason(const std::string& thrown) {
     std::string last;
     gmsh::logger::getLastError(last);
     return last.empty() ? std::string("unknown gmsh error") : oneLine(last);
+}
+
+/// The first error gmsh logged since the last call, or "" (and forgets the log).
+std::string firstError() {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    const std::string prefix = "Error: ";
+    for (const std::string& line : log) {
+        if (line.rfind(prefix, 0) == 0) return oneLine(line.substr(prefix.size()));
+    }
+    return "";
 }
 
 void collectWarnings(std::vector<std::string>& warnings) {
@@ -279,14 +294,23 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
     } catch (const std::string& e) {
         throw InputError(source + ": gmsh cannot read it: " + gmshReason(e));
     }
+    collectWarnings(warnings);
+    if (const std::string error = firstError(); !error.empty()) {
+        throw InputError(source + ": gmsh cannot read it: " + error);
+    }
+    gmsh::logger::stop();  // a fresh log for meshing
+    gmsh::logger::start();
     if (ext == ".geo") {
         try {
             gmsh::model::mesh::generate(3);
         } catch (const std::string& e) {
             throw MeshError(source + ": gmsh cannot mesh it: " + gmshReason(e));
         }
+        collectWarnings(warnings);
+        if (const std::string error = firstError(); !error.empty()) {
+            throw MeshError(source + ": gmsh cannot mesh it: " + error);
+        }
     }
-    collectWarnings(warnings);
 
     HexMesh mesh;
     mesh.source = source;

@@ -148,6 +148,7 @@ TEST(PreprocCli, BadInputsFailCleanly) {
         {"empty.msh", "no hexahedra"},
         {"no_volume.geo", "no hexahedra"},
         {"ungrouped_volume.geo", "no physical volume group"},
+        {"bad_transfinite.geo", "cannot mesh it"},
     };
     for (const Case& c : cases) {
         const std::string path = source("tests/data/") + c.file;

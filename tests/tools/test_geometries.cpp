@@ -294,6 +294,7 @@ TEST(PreprocErrors, BadInputsGiveClearErrors) {
     EXPECT_NE(errorOf<MeshError>("no_volume.geo").find("no hexahedra"), std::string::npos);
     EXPECT_NE(errorOf<MeshError>("ungrouped_volume.geo").find("volume 2 is in no physical volume"),
               std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("bad_transfinite.geo").find("transfinite"), std::string::npos);
     EXPECT_NE(errorOf<InputError>("inverted.msh", {{"refine", 2}}).find(".geo files only"),
               std::string::npos);
 }
