@@ -10,7 +10,10 @@
 // periodic indices) exactly, without holes or overlaps. Among the partitions of the blocks into
 // consistent sets, gluing picks the one that honours the most shared faces (so the fewest
 // faces are left as interfaces between spaces), then the fewest spaces, then the largest
-// spaces. The search is exact up to kMaxSearchSteps steps and keeps the best so far beyond.
+// spaces. The search (branch and bound over the shared faces: inside a space or not) tries
+// faces away from irregular block edges first and bounds with "one face per triple around an
+// edge where three blocks meet"; it is exact up to kMaxSearchSteps steps and keeps the best
+// partition found beyond (reported, never inconsistent).
 //
 // Output: spaces sorted by (body, first block); each space's frame is its first block's frame
 // (block_indexing.hpp), shifted so that cells lie in [0, cells); periodic indices wrap.
