@@ -136,12 +136,22 @@ void collectWarnings(std::vector<std::string>& warnings) {
     }
 }
 
+/// Plural name of a gmsh element type, for messages. Common types are named here (asking gmsh
+/// about a prism leaks memory inside gmsh 4.8, which sanitizer builds report).
 std::string elementName(int type) {
+    static const std::map<int, const char*> kNames = {
+        {2, "3-node triangles"},    {3, "4-node quadrangles"},  {4, "4-node tetrahedra"},
+        {5, "8-node hexahedra"},    {6, "6-node prisms"},       {7, "5-node pyramids"},
+        {9, "6-node triangles"},    {10, "9-node quadrangles"}, {11, "10-node tetrahedra"},
+        {12, "27-node hexahedra"},  {13, "18-node prisms"},     {14, "14-node pyramids"},
+        {16, "8-node quadrangles"}, {17, "20-node hexahedra"},  {18, "15-node prisms"},
+        {19, "13-node pyramids"}};
+    if (const auto it = kNames.find(type); it != kNames.end()) return it->second;
     std::string name;
     int dim = 0, order = 0, nodes = 0, primary = 0;
     std::vector<double> local;
     gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
-    return name;
+    return "elements of type '" + name + "'";
 }
 
 /// Node tag → dense node id (ids in ascending tag order).
@@ -211,14 +221,15 @@ void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
                 hexes = elementTags[t].size();
                 continue;
             }
-            others += (others.empty() ? "" : ", ") + std::to_string(elementTags[t].size()) + " × " +
-                      elementName(types[t]);
+            if (!others.empty()) others += ", ";
+            others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
         }
         if (!others.empty()) {
-            throw MeshError(source + ": volume " + std::to_string(tag) + " holds " + others +
-                            (hexes > 0 ? " besides " + std::to_string(hexes) + " hexahedra" : "") +
-                            "; gsph-preproc needs structured blocks of 8-node hexahedra "
-                            "(Transfinite Volume + Recombine)");
+            throw MeshError(
+                source + ": volume " + std::to_string(tag) + " holds " + others +
+                (hexes > 0 ? " besides " + std::to_string(hexes) + " 8-node hexahedra" : "") +
+                "; gsph-preproc needs structured blocks of 8-node hexahedra "
+                "(Transfinite Volume + Recombine)");
         }
         if (hexes == 0) continue;
         HexVolume volume{tag, static_cast<Index>(mesh.hexes.size()), static_cast<Index>(hexes)};
@@ -254,7 +265,7 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
                         throw MeshError(source + ": physical surface " + label + " (surface " +
                                         std::to_string(surface) + ") holds " +
                                         elementName(types[t]) +
-                                        " elements; particle sets need 4-node quadrangles "
+                                        "; particle sets need 4-node quadrangles "
                                         "(Recombine Surface)");
                     }
                     appendElements<4>(source, nodeTags[t], ids, group.quads);

@@ -140,8 +140,8 @@ TEST(PreprocCli, BadInputsFailCleanly) {
     const Case cases[] = {
         {"missing.geo", "no such file"},
         {"bad_syntax.geo", "syntax error"},
-        {"tetrahedra.geo", "Tetrahedron"},
-        {"mixed.msh", "Prism"},
+        {"tetrahedra.geo", "4-node tetrahedra"},
+        {"mixed.msh", "1 6-node prisms besides 1 8-node hexahedra"},
         {"unstructured_hex.geo", "not a structured hex block"},
         {"inverted.msh", "inverted"},
         {"folded.msh", "inverted"},

@@ -283,8 +283,8 @@ TEST(PreprocErrors, BadInputsGiveClearErrors) {
     EXPECT_NE(errorOf<InputError>("missing.geo").find("no such file"), std::string::npos);
     EXPECT_NE(errorOf<InputError>("bad_syntax.geo").find("line 3: syntax error"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("tetrahedra.geo").find("Tetrahedron"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("mixed.msh").find("Prism"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("tetrahedra.geo").find("4-node tetrahedra"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("mixed.msh").find("6-node prisms"), std::string::npos);
     EXPECT_NE(errorOf<MeshError>("unstructured_hex.geo").find("not a structured hex block"),
               std::string::npos);
     EXPECT_NE(errorOf<MeshError>("inverted.msh").find("element 2 in volume 1 is inverted"),
