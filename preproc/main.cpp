@@ -17,7 +17,10 @@
 //   docs/formats.md. On error: one line on stderr naming the file and the fault, exit status 1,
 //   and no output file.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <future>
 #include <iostream>
 
 #include "conversion.hpp"
@@ -25,6 +28,7 @@
 #include "core/version.hpp"
 #include "gmsh_input.hpp"
 #include "io/particle_file.hpp"
+#include "io/sha256.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -73,6 +77,9 @@ int main(int argc, char** argv) {
 
     try {
         const auto start = Clock::now();
+        // Hash the input for the provenance while gmsh reads it (a large .msh takes ~1 s).
+        std::future<std::string> inputHash =
+            std::async(std::launch::async, [&] { return gsph::sha256File(input); });
         gsph::preproc::MeshReadOptions options;
         std::string applied;
         for (const std::string& p : parameters) {
@@ -88,8 +95,8 @@ int main(int argc, char** argv) {
         warnings.insert(warnings.end(), conversion.warnings.begin(), conversion.warnings.end());
         const auto converted = Clock::now();
 
-        conversion.particles.provenance =
-            gsph::provenanceOf("gsph-preproc", gsph::kVersion, input, applied);
+        conversion.particles.provenance = {"gsph-preproc",  gsph::kVersion, input,
+                                           inputHash.get(), applied,        "SI"};
         gsph::writeParticleFile(output, conversion.particles);
         const auto written = Clock::now();
 
