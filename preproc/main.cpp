@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cmath>
 #include <future>
 #include <iostream>
 
@@ -53,7 +54,8 @@ std::pair<std::string, double> parseParameter(const std::string& text) {
     } catch (const std::exception&) {
         used = 0;
     }
-    if (!nameOk || eq == std::string::npos || used == 0 || eq + 1 + used != text.size()) {
+    if (!nameOk || eq == std::string::npos || used == 0 || eq + 1 + used != text.size() ||
+        !std::isfinite(value)) {
         throw gsph::InputError("--set " + text + ": expected NAME=VALUE with a number VALUE");
     }
     return {name, value};
