@@ -28,7 +28,9 @@ int cornerOf(const std::array<Index, 8>& hex, Index node) {
 }
 
 /// gmsh local node at gmsh corner bits c (kGmshCorner is its own inverse).
-Index nodeAtCorner(const std::array<Index, 8>& hex, int c) { return hex[kGmshCorner[c]]; }
+Index nodeAtCorner(const std::array<Index, 8>& hex, int c) {
+    return hex[kGmshCorner[c]];
+}
 
 /// Corner labels (block frame) of hex `next`, entered through the face of the current hex whose
 /// corners have bit d set (labels K). Returns false if those four nodes are not a face of `next`.
@@ -88,20 +90,27 @@ SignedPermutation alignWithAxes(const HexMesh& mesh, const BlockLattice& block) 
 
 }  // namespace
 
-BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
-                        const NodeHexAdjacency& adjacency) {
-    const Index first = volume.firstHex;
-    const Index end = first + volume.hexCount;
-    const auto count = static_cast<std::size_t>(volume.hexCount);
-    auto inBlock = [&](Index h) { return h >= first && h < end; };
+namespace {
 
-    // 1. A corner node: in exactly one hex of the block (the smallest such node id).
+/// Walk state: per hex of the block (index h − firstHex), its cell and its corner nodes in the
+/// block frame (corner bits c = di + 2dj + 4dk).
+struct Walk {
+    std::vector<Int3> cell;
+    std::vector<std::array<Index, 8>> corner;
+    Int3 extent = {1, 1, 1};
+    int flip = 0;  // the block frame of the corner hex = gmsh's frame reflected in these bits
+};
+
+/// Step 1–2: a corner node (in exactly one hex of the block; the smallest such id) and its hex,
+/// labelled so that the node is corner 0 and the three axes point into the block.
+Walk startWalk(const HexMesh& mesh, const HexVolume& volume, const NodeHexAdjacency& adjacency) {
+    const Index first = volume.firstHex, end = first + volume.hexCount;
     Index start = -1, startHex = -1;
     for (Index h = first; h < end; ++h) {
         for (Index n : mesh.hexes[h]) {
             if (start >= 0 && n >= start) continue;
             int within = 0;
-            for (Index g : adjacency.hexesOf(n)) within += inBlock(g) ? 1 : 0;
+            for (Index g : adjacency.hexesOf(n)) within += (g >= first && g < end) ? 1 : 0;
             if (within == 1) {
                 start = n;
                 startHex = h;
@@ -109,23 +118,31 @@ BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
         }
     }
     if (start < 0) notStructured(mesh, volume, "no corner: every node is in several hexahedra");
+    Walk walk{std::vector<Int3>(volume.hexCount, Int3{-1, -1, -1}),
+              std::vector<std::array<Index, 8>>(volume.hexCount),
+              {1, 1, 1},
+              0};
+    walk.flip = cornerOf(mesh.hexes[startHex], start);
+    for (int c = 0; c < 8; ++c) {
+        walk.corner[startHex - first][c ^ walk.flip] = nodeAtCorner(mesh.hexes[startHex], c);
+    }
+    walk.cell[startHex - first] = {0, 0, 0};
+    return walk;
+}
 
-    // 2. The corner hex: block-frame bits = gmsh bits reflected so that `start` is corner 0.
-    std::vector<Int3> cell(count, Int3{-1, -1, -1});
-    std::vector<std::array<Index, 8>> corner(count);
-    const int flip = cornerOf(mesh.hexes[startHex], start);
-    for (int c = 0; c < 8; ++c) corner[startHex - first][c ^ flip] = nodeAtCorner(mesh.hexes[startHex], c);
-    cell[startHex - first] = {0, 0, 0};
-
-    // 3. Walk +i, +j, +k from every reached hex, carrying the corner labels across faces.
+/// Step 3: from every reached hex, cross its +i, +j, +k faces, carrying the corner labels.
+void walkBlock(const HexMesh& mesh, const HexVolume& volume, const NodeHexAdjacency& adjacency,
+               Walk& walk) {
+    const Index first = volume.firstHex, end = first + volume.hexCount;
+    Index startHex = first;
+    while (walk.cell[startHex - first][0] < 0) ++startHex;
     std::deque<Index> queue{startHex};
-    Int3 extent = {1, 1, 1};
     std::size_t reached = 1;
     while (!queue.empty()) {
         const Index h = queue.front();
         queue.pop_front();
         for (int d = 0; d < 3; ++d) {
-            const std::array<Index, 8>& K = corner[h - first];
+            const std::array<Index, 8>& K = walk.corner[h - first];
             std::array<Index, 4> face{};
             for (int o = 0, m = 0; o < 8; ++o) {
                 if (o >> d & 1) face[m++] = K[o];
@@ -133,59 +150,65 @@ BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
             std::array<Index, 2> found{};
             const int matches = adjacency.hexesWithFace(face, h, found);
             if (matches > 1) notStructured(mesh, volume, "a face is shared by three hexahedra");
-            if (matches == 0 || !inBlock(found[0])) continue;  // the block's boundary
+            if (matches == 0 || found[0] < first || found[0] >= end) continue;  // block boundary
             const Index next = found[0];
             std::array<Index, 8> carried{};
             if (!carryCorners(K, mesh.hexes[next], d, carried)) {
                 notStructured(mesh, volume, "neighbouring hexahedra do not share a whole face");
             }
-            Int3 nc = cell[h - first];
+            Int3 nc = walk.cell[h - first];
             ++nc[d];
-            if (cell[next - first][0] >= 0) {
-                if (cell[next - first] != nc || corner[next - first] != carried) {
+            if (walk.cell[next - first][0] >= 0) {
+                if (walk.cell[next - first] != nc || walk.corner[next - first] != carried) {
                     notStructured(mesh, volume,
                                   "element " + std::to_string(mesh.hexTags[next]) +
                                       " is reached at two lattice positions");
                 }
                 continue;
             }
-            cell[next - first] = nc;
-            corner[next - first] = carried;
-            extent[d] = std::max(extent[d], nc[d] + 1);
+            walk.cell[next - first] = nc;
+            walk.corner[next - first] = carried;
+            walk.extent[d] = std::max(walk.extent[d], nc[d] + 1);
             ++reached;
             queue.push_back(next);
         }
     }
+    const auto count = static_cast<std::size_t>(volume.hexCount);
     if (reached != count) {
-        notStructured(mesh, volume, std::to_string(count - reached) +
-                                        " hexahedra cannot be reached from its corner");
+        notStructured(
+            mesh, volume,
+            std::to_string(count - reached) + " hexahedra cannot be reached from its corner");
     }
-    const std::size_t cells = std::size_t(extent[0]) * extent[1] * extent[2];
-    if (cells != count) {
-        notStructured(mesh, volume,
-                      std::to_string(count) + " hexahedra do not fill a " +
-                          std::to_string(extent[0]) + "×" + std::to_string(extent[1]) + "×" +
-                          std::to_string(extent[2]) + " lattice");
-    }
+}
 
-    // 4. Lattice arrays, every slot taken exactly once.
+/// Step 4: the lattice arrays, every cell and every lattice node taken exactly once.
+BlockLattice fillLattice(const HexMesh& mesh, const HexVolume& volume, const Walk& walk) {
+    const Int3 n = walk.extent;
+    const std::size_t cells = static_cast<std::size_t>(n[0]) * n[1] * n[2];
+    if (cells != static_cast<std::size_t>(volume.hexCount)) {
+        notStructured(mesh, volume,
+                      std::to_string(volume.hexCount) + " hexahedra do not fill a " +
+                          std::to_string(n[0]) + "×" + std::to_string(n[1]) + "×" +
+                          std::to_string(n[2]) + " lattice");
+    }
     BlockLattice block;
     block.volumeTag = volume.tag;
-    block.cells = extent;
+    block.cells = n;
     block.hexAtCell.assign(cells, -1);
-    block.nodes.assign(std::size_t(extent[0] + 1) * (extent[1] + 1) * (extent[2] + 1), -1);
-    for (Index h = first; h < end; ++h) {
-        const Int3 c = cell[h - first];
-        Index& slot = block.hexAtCell[c[0] + extent[0] * (c[1] + extent[1] * c[2])];
+    block.nodes.assign(static_cast<std::size_t>(n[0] + 1) * (n[1] + 1) * (n[2] + 1), -1);
+    for (Index h = volume.firstHex; h < volume.firstHex + volume.hexCount; ++h) {
+        const Int3 c = walk.cell[h - volume.firstHex];
+        Index& slot = block.hexAtCell[c[0] + n[0] * (c[1] + n[1] * c[2])];
         if (slot >= 0) notStructured(mesh, volume, "two hexahedra take the same lattice cell");
         slot = h;
         for (int o = 0; o < 8; ++o) {
             const int i = c[0] + (o & 1), j = c[1] + (o >> 1 & 1), k = c[2] + (o >> 2 & 1);
-            Index& node = block.nodes[i + (extent[0] + 1) * (j + (extent[1] + 1) * k)];
-            if (node >= 0 && node != corner[h - first][o]) {
+            Index& node = block.nodes[i + (n[0] + 1) * (j + (n[1] + 1) * k)];
+            const Index labelled = walk.corner[h - volume.firstHex][o];
+            if (node >= 0 && node != labelled) {
                 notStructured(mesh, volume, "two nodes take the same lattice position");
             }
-            node = corner[h - first][o];
+            node = labelled;
         }
     }
     std::vector<Index> distinct(block.nodes);
@@ -193,15 +216,22 @@ BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
     if (std::adjacent_find(distinct.begin(), distinct.end()) != distinct.end()) {
         notStructured(mesh, volume, "a node takes two lattice positions");
     }
+    return block;
+}
 
-    // 5. Right-handed: gmsh's own frame is (positive Jacobians, checked before), and the block
-    //    frame of the corner hex reflects it in the axes set in `flip`.
-    if (((flip & 1) + (flip >> 1 & 1) + (flip >> 2 & 1)) % 2 == 1) {
+}  // namespace
+
+BlockLattice indexBlock(const HexMesh& mesh, const HexVolume& volume,
+                        const NodeHexAdjacency& adjacency) {
+    Walk walk = startWalk(mesh, volume, adjacency);
+    walkBlock(mesh, volume, adjacency, walk);
+    BlockLattice block = fillLattice(mesh, volume, walk);
+    // Step 5, right-handed: gmsh's own frame is (positive Jacobians, checked before), and the
+    // block frame of the corner hex reflects it in the axes set in `flip`.
+    if (((walk.flip & 1) + (walk.flip >> 1 & 1) + (walk.flip >> 2 & 1)) % 2 == 1) {
         reorientBlock(block, SignedPermutation{{0, 1, 2}, {-1, 1, 1}});
     }
-    // 6. Turn the frame so that i, j, k follow x, y, z as well as the block allows: maximise
-    //    Σ_d (unit mean edge of the axis turned onto d) · e_d over the 24 rotations. The sum of
-    //    the edges along an axis telescopes into the sum of its grid lines' chords.
+    // Step 6: turn the frame so that i, j, k follow x, y, z as well as the block allows.
     const SignedPermutation R = alignWithAxes(mesh, block);
     if (!(R == SignedPermutation{})) reorientBlock(block, R);
     return block;

@@ -24,8 +24,8 @@ namespace gsph::preproc {
 
 struct BlockLattice {
     int volumeTag = 0;
-    Int3 cells = {0, 0, 0};       ///< n_i, n_j, n_k
-    std::vector<Index> nodes;     ///< node id at lattice node (i,j,k), (n+1)³ layout, i fastest
+    Int3 cells = {0, 0, 0};        ///< n_i, n_j, n_k
+    std::vector<Index> nodes;      ///< node id at lattice node (i,j,k), (n+1)³ layout, i fastest
     std::vector<Index> hexAtCell;  ///< hex id of cell (i,j,k), i fastest
 
     Index node(int i, int j, int k) const {

@@ -38,10 +38,11 @@ std::vector<Index> assignBodies(const HexMesh& mesh, std::vector<BodyInfo>& bodi
             holdsHexes = true;
             Index& body = bodyOfVolume[it->second];
             if (body >= 0 && body != static_cast<Index>(b)) {
-                throw MeshError(mesh.source + ": volume " + std::to_string(tag) +
-                                " is in two physical volume groups, " +
-                                groupLabel(mesh.volumeGroups[body].name, mesh.volumeGroups[body].tag) +
-                                " and " + groupLabel(g.name, g.tag) + "; a volume belongs to one body");
+                throw MeshError(
+                    mesh.source + ": volume " + std::to_string(tag) +
+                    " is in two physical volume groups, " +
+                    groupLabel(mesh.volumeGroups[body].name, mesh.volumeGroups[body].tag) +
+                    " and " + groupLabel(g.name, g.tag) + "; a volume belongs to one body");
             }
             body = static_cast<Index>(b);
         }
@@ -101,8 +102,60 @@ void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
         std::sort(members.begin(), members.end());
         members.erase(std::unique(members.begin(), members.end()), members.end());
         if (members.empty()) {
-            out.warnings.push_back("particle set '" + name + "' is empty (its surfaces hold no "
+            out.warnings.push_back("particle set '" + name +
+                                   "' is empty (its surfaces hold no "
                                    "quadrilaterals)");
+        }
+    }
+}
+
+/// Particles under construction: the output, and which hex went where.
+struct Assembly {
+    Conversion& out;
+    std::vector<Index> particleOfHex;  // per hex
+    std::vector<char> filled;          // per particle slot
+};
+
+constexpr double kDtheta = 1.0;  // DESIGN §2: Δθ = 1 in every space
+
+/// The particles of one block of a space: X at the hex's parametric centre, its exact volume,
+/// θ = (i+½, j+½, k+½)·Δθ at its cell in the space, stored at `first` + its lattice-order rank.
+void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
+                const BlockLattice& block, Index spaceId, std::size_t first, Assembly& as) {
+    ParticleFile& pf = as.out.particles;
+    ConversionStats& stats = as.out.stats;
+    for (int k = 0; k < block.cells[2]; ++k) {
+        for (int j = 0; j < block.cells[1]; ++j) {
+            for (int i = 0; i < block.cells[0]; ++i) {
+                HexCorners x;
+                for (int c = 0; c < 8; ++c) {
+                    x[c] = mesh.nodes[block.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))];
+                }
+                const Index h = block.hex(i, j, k);
+                if (!(minCornerJacobian(x) > 0.0)) {
+                    throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
+                                    " in volume " + std::to_string(block.volumeTag) +
+                                    " is inverted (the structured grid folds there)");
+                }
+                const Int3 c = space.cellOf(entry, {i, j, k});
+                const std::size_t a = first + c[0] +
+                                      static_cast<std::size_t>(space.cells[0]) *
+                                          (c[1] + static_cast<std::size_t>(space.cells[1]) * c[2]);
+                if (as.filled[a]++ != 0) {
+                    throw MeshError(mesh.source + ": internal error: two hexahedra at one cell");
+                }
+                pf.X[a] = hexCentre(x);
+                pf.volume[a] = hexVolume(x);
+                pf.theta[a] = Vec3(c[0] + 0.5, c[1] + 0.5, c[2] + 0.5) * kDtheta;
+                pf.latticeIndex[a] = {c[0], c[1], c[2]};
+                pf.space[a] = spaceId;
+                pf.body[a] = space.body;
+                as.particleOfHex[h] = static_cast<Index>(a);
+                as.out.elementOfParticle[a] = mesh.hexTags[h];
+                const auto edges = edgeLengthRange(x);
+                stats.minEdge = std::min(stats.minEdge, edges[0]);
+                stats.maxEdge = std::max(stats.maxEdge, edges[1]);
+            }
         }
     }
 }
@@ -131,70 +184,36 @@ Conversion convertHexMesh(const HexMesh& mesh) {
     pf.space.resize(n);
     pf.body.resize(n);
     pf.latticeIndex.resize(n);
-    std::vector<Index> particleOfHex(n, -1);
     out.elementOfParticle.resize(n);
-    std::vector<char> filled(n, 0);
-    ConversionStats& stats = out.stats;
-    stats.hexes = n;
-    stats.minEdge = INFINITY;
-    const double dtheta = 1.0;  // DESIGN §2: Δθ = 1 for every space
-
-    std::size_t offset = 0;
+    out.stats.hexes = n;
+    out.stats.minEdge = INFINITY;
+    Assembly as{out, std::vector<Index>(n, -1), std::vector<char>(n, 0)};
+    std::size_t offset = 0;  // spaces follow each other: sorted by body, then first volume
     for (std::size_t s = 0; s < glued.spaces.size(); ++s) {
         const GluedSpace& space = glued.spaces[s];
-        pf.spaces.push_back(LatticeSpace{dtheta, space.cells, space.periodic});
-        stats.spaceVolumes.emplace_back();
+        pf.spaces.push_back(LatticeSpace{kDtheta, space.cells, space.periodic});
+        out.stats.spaceVolumes.emplace_back();
         for (std::size_t e = 0; e < space.blocks.size(); ++e) {
             const BlockLattice& block = blocks[space.blocks[e]];
-            stats.spaceVolumes.back().push_back(block.volumeTag);
-            for (int k = 0; k < block.cells[2]; ++k) {
-                for (int j = 0; j < block.cells[1]; ++j) {
-                    for (int i = 0; i < block.cells[0]; ++i) {
-                        HexCorners x;
-                        for (int c = 0; c < 8; ++c) {
-                            x[c] = mesh.nodes[block.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))];
-                        }
-                        const Index h = block.hex(i, j, k);
-                        if (!(minCornerJacobian(x) > 0.0)) {
-                            throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                                            " in volume " + std::to_string(block.volumeTag) +
-                                            " is inverted (the structured grid folds there)");
-                        }
-                        const Int3 c = space.cellOf(e, {i, j, k});
-                        const std::size_t a =
-                            offset + c[0] + std::size_t(space.cells[0]) * (c[1] + std::size_t(space.cells[1]) * c[2]);
-                        if (filled[a]) throw MeshError(mesh.source + ": internal error: two hexahedra at one lattice cell");
-                        filled[a] = 1;
-                        pf.X[a] = hexCentre(x);
-                        pf.volume[a] = hexVolume(x);
-                        pf.theta[a] = Vec3(c[0] + 0.5, c[1] + 0.5, c[2] + 0.5) * dtheta;
-                        pf.latticeIndex[a] = {c[0], c[1], c[2]};
-                        pf.space[a] = static_cast<Index>(s);
-                        pf.body[a] = space.body;
-                        particleOfHex[h] = static_cast<Index>(a);
-                        out.elementOfParticle[a] = mesh.hexTags[h];
-                        const auto edges = edgeLengthRange(x);
-                        stats.minEdge = std::min(stats.minEdge, edges[0]);
-                        stats.maxEdge = std::max(stats.maxEdge, edges[1]);
-                    }
-                }
-            }
+            out.stats.spaceVolumes.back().push_back(block.volumeTag);
+            placeBlock(mesh, space, e, block, static_cast<Index>(s), offset, as);
         }
-        offset += std::size_t(space.cells[0]) * space.cells[1] * space.cells[2];
+        offset += static_cast<std::size_t>(space.cells[0]) * space.cells[1] * space.cells[2];
     }
-    if (offset != n || std::find(filled.begin(), filled.end(), 0) != filled.end()) {
-        throw MeshError(mesh.source + ": internal error: the spaces do not hold every hexahedron once");
+    if (offset != n || std::find(as.filled.begin(), as.filled.end(), 0) != as.filled.end()) {
+        throw MeshError(mesh.source +
+                        ": internal error: the spaces do not hold every hexahedron once");
     }
-    stats.sharedFaces = glued.sharedFaces;
-    stats.honouredFaces = glued.honouredFaces;
-    stats.exhaustiveGluing = glued.exhaustive;
+    out.stats.sharedFaces = glued.sharedFaces;
+    out.stats.honouredFaces = glued.honouredFaces;
+    out.stats.exhaustiveGluing = glued.exhaustive;
     if (!glued.exhaustive) {
         out.warnings.push_back("gluing blocks into spaces stopped after " +
                                std::to_string(kMaxSearchSteps) +
                                " search steps: the spaces are consistent but may not be the "
                                "fewest possible");
     }
-    buildSets(mesh, adjacency, particleOfHex, out);
+    buildSets(mesh, adjacency, as.particleOfHex, out);
     return out;
 }
 

@@ -33,7 +33,7 @@ struct ConversionStats {
 };
 
 struct Conversion {
-    ParticleFile particles;  ///< everything but the provenance
+    ParticleFile particles;                      ///< everything but the provenance
     std::vector<std::size_t> elementOfParticle;  ///< source hex (gmsh element tag) per particle
     ConversionStats stats;
     std::vector<std::string> warnings;

@@ -31,6 +31,10 @@ class GmshSession {
         try {
             gmsh::initialize(0, nullptr, false);
             gmsh::option::setNumber("General.Terminal", 0);
+            // Log errors instead of throwing them: gmsh 4.8 throws from inside its OpenMP
+            // meshing loops, where an exception cannot be caught (std::terminate). Errors are
+            // read back from the log after each call (firstError).
+            gmsh::option::setNumber("General.AbortOnError", 0);
             gmsh::onelab::clear();
             gmsh::logger::start();
         } catch (...) {
@@ -65,15 +69,17 @@ class ParameterWrapper {
         : path_(input) {
         if (parameters.empty()) return;
         static std::atomic<int> counter{0};
-        path_ = std::filesystem::temp_directory_path() /
-                ("gsph-preproc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + ".geo");
+        path_ =
+            std::filesystem::temp_directory_path() / ("gsph-preproc-" + std::to_string(::getpid()) +
+                                                      "-" + std::to_string(counter++) + ".geo");
         std::ofstream out(path_);
         for (const auto& [name, value] : parameters) {
-            const bool valid = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
-                               std::all_of(name.begin(), name.end(), [](unsigned char c) {
-                                   return std::isalnum(c) || c == '_';
-                               });
-            if (!valid) throw InputError(input.string() + ": '" + name + "' is not a parameter name");
+            const bool valid =
+                !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+                std::all_of(name.begin(), name.end(),
+                            [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+            if (!valid)
+                throw InputError(input.string() + ": '" + name + "' is not a parameter name");
             char text[64];
             std::snprintf(text, sizeof text, "%.17g", value);
             out << name << " = " << text << ";\n";
@@ -109,21 +115,43 @@ std::string gmshReason(const std::string& thrown) {
     return last.empty() ? std::string("unknown gmsh error") : oneLine(last);
 }
 
+/// The first error gmsh logged since the last call, or "" (and forgets the log).
+std::string firstError() {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    const std::string prefix = "Error: ";
+    for (const std::string& line : log) {
+        if (line.rfind(prefix, 0) == 0) return oneLine(line.substr(prefix.size()));
+    }
+    return "";
+}
+
 void collectWarnings(std::vector<std::string>& warnings) {
     std::vector<std::string> log;
     gmsh::logger::get(log);
     const std::string prefix = "Warning: ";
     for (const std::string& line : log) {
-        if (line.rfind(prefix, 0) == 0) warnings.push_back("gmsh: " + oneLine(line.substr(prefix.size())));
+        if (line.rfind(prefix, 0) == 0)
+            warnings.push_back("gmsh: " + oneLine(line.substr(prefix.size())));
     }
 }
 
+/// Plural name of a gmsh element type, for messages. Common types are named here (asking gmsh
+/// about a prism leaks memory inside gmsh 4.8, which sanitizer builds report).
 std::string elementName(int type) {
+    static const std::map<int, const char*> kNames = {
+        {2, "3-node triangles"},    {3, "4-node quadrangles"},  {4, "4-node tetrahedra"},
+        {5, "8-node hexahedra"},    {6, "6-node prisms"},       {7, "5-node pyramids"},
+        {9, "6-node triangles"},    {10, "9-node quadrangles"}, {11, "10-node tetrahedra"},
+        {12, "27-node hexahedra"},  {13, "18-node prisms"},     {14, "14-node pyramids"},
+        {16, "8-node quadrangles"}, {17, "20-node hexahedra"},  {18, "15-node prisms"},
+        {19, "13-node pyramids"}};
+    if (const auto it = kNames.find(type); it != kNames.end()) return it->second;
     std::string name;
     int dim = 0, order = 0, nodes = 0, primary = 0;
     std::vector<double> local;
     gmsh::model::mesh::getElementProperties(type, name, dim, order, nodes, local, primary);
-    return name;
+    return "elements of type '" + name + "'";
 }
 
 /// Node tag → dense node id (ids in ascending tag order).
@@ -133,7 +161,8 @@ class NodeIds {
             std::vector<Vec3>& nodes) {
         std::vector<std::size_t> order(tags.size());
         std::iota(order.begin(), order.end(), std::size_t{0});
-        std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return tags[a] < tags[b]; });
         nodes.resize(tags.size());
         const std::size_t maxTag = tags.empty() ? 0 : tags[order.back()];
         dense_ = maxTag <= 2 * tags.size() + 1024;
@@ -169,8 +198,8 @@ void appendElements(const std::string& source, const std::vector<std::size_t>& n
         for (std::size_t k = 0; k < N; ++k) {
             element[k] = ids(nodeTags[e + k]);
             if (element[k] < 0) {
-                throw MeshError(source + ": an element refers to node " + std::to_string(nodeTags[e + k]) +
-                                ", which does not exist");
+                throw MeshError(source + ": an element refers to node " +
+                                std::to_string(nodeTags[e + k]) + ", which does not exist");
             }
         }
         out.push_back(element);
@@ -192,14 +221,15 @@ void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
                 hexes = elementTags[t].size();
                 continue;
             }
-            others += (others.empty() ? "" : ", ") + std::to_string(elementTags[t].size()) + " × " +
-                      elementName(types[t]);
+            if (!others.empty()) others += ", ";
+            others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
         }
         if (!others.empty()) {
-            throw MeshError(source + ": volume " + std::to_string(tag) + " holds " + others +
-                            (hexes > 0 ? " besides " + std::to_string(hexes) + " hexahedra" : "") +
-                            "; gsph-preproc needs structured blocks of 8-node hexahedra "
-                            "(Transfinite Volume + Recombine)");
+            throw MeshError(
+                source + ": volume " + std::to_string(tag) + " holds " + others +
+                (hexes > 0 ? " besides " + std::to_string(hexes) + " 8-node hexahedra" : "") +
+                "; gsph-preproc needs structured blocks of 8-node hexahedra "
+                "(Transfinite Volume + Recombine)");
         }
         if (hexes == 0) continue;
         HexVolume volume{tag, static_cast<Index>(mesh.hexes.size()), static_cast<Index>(hexes)};
@@ -220,7 +250,8 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
         gmsh::model::getPhysicalName(dim, tag, name);
         std::vector<int> entities;
         gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-        const std::string label = name.empty() ? "(tag " + std::to_string(tag) + ")" : "'" + name + "'";
+        const std::string label =
+            name.empty() ? "(tag " + std::to_string(tag) + ")" : "'" + name + "'";
         if (dim == 3) {
             mesh.volumeGroups.push_back({tag, name, entities});
         } else if (dim == 2) {
@@ -232,8 +263,9 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
                 for (std::size_t t = 0; t < types.size(); ++t) {
                     if (types[t] != kQuad4) {
                         throw MeshError(source + ": physical surface " + label + " (surface " +
-                                        std::to_string(surface) + ") holds " + elementName(types[t]) +
-                                        " elements; particle sets need 4-node quadrangles "
+                                        std::to_string(surface) + ") holds " +
+                                        elementName(types[t]) +
+                                        "; particle sets need 4-node quadrangles "
                                         "(Recombine Surface)");
                     }
                     appendElements<4>(source, nodeTags[t], ids, group.quads);
@@ -256,9 +288,11 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
     if (!std::filesystem::exists(input, ec)) throw InputError(source + ": no such file");
     if (!std::filesystem::is_regular_file(input, ec)) throw InputError(source + ": not a file");
     std::string ext = input.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (ext != ".geo" && ext != ".msh") {
-        throw InputError(source + ": unsupported input '" + ext + "' (expected a .geo or .msh file)");
+        throw InputError(source + ": unsupported input '" + ext +
+                         "' (expected a .geo or .msh file)");
     }
     if (ext == ".msh" && !options.parameters.empty()) {
         throw InputError(source + ": parameters (--set) apply to .geo files only");
@@ -271,14 +305,23 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
     } catch (const std::string& e) {
         throw InputError(source + ": gmsh cannot read it: " + gmshReason(e));
     }
+    collectWarnings(warnings);
+    if (const std::string error = firstError(); !error.empty()) {
+        throw InputError(source + ": gmsh cannot read it: " + error);
+    }
+    gmsh::logger::stop();  // a fresh log for meshing
+    gmsh::logger::start();
     if (ext == ".geo") {
         try {
             gmsh::model::mesh::generate(3);
         } catch (const std::string& e) {
             throw MeshError(source + ": gmsh cannot mesh it: " + gmshReason(e));
         }
+        collectWarnings(warnings);
+        if (const std::string error = firstError(); !error.empty()) {
+            throw MeshError(source + ": gmsh cannot mesh it: " + error);
+        }
     }
-    collectWarnings(warnings);
 
     HexMesh mesh;
     mesh.source = source;

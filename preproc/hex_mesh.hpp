@@ -38,12 +38,12 @@ struct SurfaceGroup {
 };
 
 struct HexMesh {
-    std::string source;                      ///< input file, for messages
-    std::vector<Vec3> nodes;                 ///< node coordinates [m], indexed by node id
+    std::string source;                       ///< input file, for messages
+    std::vector<Vec3> nodes;                  ///< node coordinates [m], indexed by node id
     std::vector<std::array<Index, 8>> hexes;  ///< node ids in gmsh hex8 order
-    std::vector<std::size_t> hexTags;        ///< gmsh element tag of each hex (messages)
-    std::vector<HexVolume> volumes;          ///< sorted by tag
-    std::vector<VolumeGroup> volumeGroups;   ///< sorted by tag
+    std::vector<std::size_t> hexTags;         ///< gmsh element tag of each hex (messages)
+    std::vector<HexVolume> volumes;           ///< sorted by tag
+    std::vector<VolumeGroup> volumeGroups;    ///< sorted by tag
     std::vector<SurfaceGroup> surfaceGroups;  ///< sorted by tag
 };
 

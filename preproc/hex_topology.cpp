@@ -2,6 +2,7 @@
 #include "hex_topology.hpp"
 
 #include <algorithm>
+#include <vector>
 
 namespace gsph::preproc {
 
@@ -22,19 +23,32 @@ NodeHexAdjacency::NodeHexAdjacency(Index nodeCount, std::span<const std::array<I
 
 int NodeHexAdjacency::hexesWithFace(const std::array<Index, 4>& face, Index exclude,
                                     std::array<Index, 2>& found) const {
-    int count = 0;
-    Index previous = -1;
-    for (Index h : hexesOf(face[0])) {
-        if (h == exclude || h == previous) continue;
-        previous = h;
-        const auto& nodes = hexes_[static_cast<std::size_t>(h)];
-        auto has = [&](Index n) { return std::find(nodes.begin(), nodes.end(), n) != nodes.end(); };
-        if (has(face[1]) && has(face[2]) && has(face[3])) {
-            if (count < 2) found[static_cast<std::size_t>(count)] = h;
-            ++count;
-        }
+    // Intersect the sorted hex lists of the four nodes with merge walks. A structured mesh has
+    // at most 8 hexes per node; other meshes may have more (then the buffer is on the heap).
+    const auto base = hexesOf(face[0]);
+    std::array<Index, 16> small{};
+    std::vector<Index> large;
+    Index* common = small.data();
+    if (base.size() > small.size()) {
+        large.resize(base.size());
+        common = large.data();
     }
-    return count;
+    std::size_t n = 0;
+    for (Index h : base) {
+        if (h != exclude && (n == 0 || common[n - 1] != h)) common[n++] = h;
+    }
+    for (int k = 1; k < 4 && n > 0; ++k) {
+        const auto other = hexesOf(face[k]);
+        std::size_t kept = 0;
+        auto it = other.begin();
+        for (std::size_t m = 0; m < n; ++m) {
+            while (it != other.end() && *it < common[m]) ++it;
+            if (it != other.end() && *it == common[m]) common[kept++] = common[m];
+        }
+        n = kept;
+    }
+    for (std::size_t m = 0; m < std::min<std::size_t>(n, 2); ++m) found[m] = common[m];
+    return static_cast<int>(n);
 }
 
 }  // namespace gsph::preproc

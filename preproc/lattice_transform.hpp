@@ -50,7 +50,8 @@ struct SignedPermutation {
     static const std::vector<SignedPermutation>& rotations() {
         static const std::vector<SignedPermutation> all = [] {
             std::vector<SignedPermutation> out;
-            const Int3 perms[6] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+            const Int3 perms[6] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2},
+                                   {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
             for (const Int3& p : perms) {
                 for (int s = 0; s < 8; ++s) {
                     SignedPermutation r{p, {(s & 1) ? -1 : 1, (s & 2) ? -1 : 1, (s & 4) ? -1 : 1}};

@@ -17,7 +17,11 @@
 //   docs/formats.md. On error: one line on stderr naming the file and the fault, exit status 1,
 //   and no output file.
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <chrono>
+#include <cmath>
+#include <future>
 #include <iostream>
 
 #include "conversion.hpp"
@@ -25,6 +29,7 @@
 #include "core/version.hpp"
 #include "gmsh_input.hpp"
 #include "io/particle_file.hpp"
+#include "io/sha256.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -40,9 +45,8 @@ std::pair<std::string, double> parseParameter(const std::string& text) {
     const std::size_t eq = text.find('=');
     const std::string name = text.substr(0, eq);
     const bool nameOk = !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
-                        std::all_of(name.begin(), name.end(), [](unsigned char c) {
-                            return std::isalnum(c) || c == '_';
-                        });
+                        std::all_of(name.begin(), name.end(),
+                                    [](unsigned char c) { return std::isalnum(c) || c == '_'; });
     double value = 0.0;
     std::size_t used = 0;
     try {
@@ -50,7 +54,8 @@ std::pair<std::string, double> parseParameter(const std::string& text) {
     } catch (const std::exception&) {
         used = 0;
     }
-    if (!nameOk || eq == std::string::npos || used == 0 || eq + 1 + used != text.size()) {
+    if (!nameOk || eq == std::string::npos || used == 0 || eq + 1 + used != text.size() ||
+        !std::isfinite(value)) {
         throw gsph::InputError("--set " + text + ": expected NAME=VALUE with a number VALUE");
     }
     return {name, value};
@@ -74,6 +79,9 @@ int main(int argc, char** argv) {
 
     try {
         const auto start = Clock::now();
+        // Hash the input for the provenance while gmsh reads it (a large .msh takes ~1 s).
+        std::future<std::string> inputHash =
+            std::async(std::launch::async, [&] { return gsph::sha256File(input); });
         gsph::preproc::MeshReadOptions options;
         std::string applied;
         for (const std::string& p : parameters) {
@@ -89,8 +97,8 @@ int main(int argc, char** argv) {
         warnings.insert(warnings.end(), conversion.warnings.begin(), conversion.warnings.end());
         const auto converted = Clock::now();
 
-        conversion.particles.provenance =
-            gsph::provenanceOf("gsph-preproc", gsph::kVersion, input, applied);
+        conversion.particles.provenance = {"gsph-preproc",  gsph::kVersion, input,
+                                           inputHash.get(), applied,        "SI"};
         gsph::writeParticleFile(output, conversion.particles);
         const auto written = Clock::now();
 
@@ -99,8 +107,8 @@ int main(int argc, char** argv) {
             const gsph::preproc::Timings timings{seconds(start, read), seconds(read, converted),
                                                  seconds(converted, written),
                                                  seconds(start, written)};
-            gsph::preproc::printSummary(std::cout, output, conversion.particles,
-                                        conversion.stats, timings);
+            gsph::preproc::printSummary(std::cout, output, conversion.particles, conversion.stats,
+                                        timings);
         }
         return 0;
     } catch (const std::exception& e) {

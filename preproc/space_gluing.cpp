@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <functional>
 #include <map>
 #include <optional>
+#include <tuple>
 
 namespace gsph::preproc {
 
@@ -17,7 +17,17 @@ struct Glue {
     LatticeTransform bToA;
 };
 
-Index nodeAt(const BlockLattice& blk, const Int3& x) { return blk.node(x[0], x[1], x[2]); }
+/// The shared faces, in search order, and the triples of faces around an edge where exactly
+/// three blocks meet: at most one face of such a triple can lie inside a space (three blocks
+/// cannot sit in three mutually adjacent quadrants around a lattice line).
+struct GlueSet {
+    std::vector<Glue> glues;
+    std::vector<std::array<int, 3>> triples;
+};
+
+Index nodeAt(const BlockLattice& blk, const Int3& x) {
+    return blk.node(x[0], x[1], x[2]);
+}
 
 /// Node coordinates of point (u, v) on side (axis, end) of a block.
 Int3 sideNode(const BlockLattice& blk, int axis, int end, int u, int v) {
@@ -62,7 +72,8 @@ std::optional<LatticeTransform> matchSides(const BlockLattice& A, int dA, int eA
                     for (int v = 0; v <= nvB && same; ++v) {
                         const Int3 xb = sideNode(B, dB, eB, u, v);
                         const Int3 xa = T.node(xb);
-                        for (int d = 0; d < 3; ++d) same = same && xa[d] >= 0 && xa[d] <= A.cells[d];
+                        for (int d = 0; d < 3; ++d)
+                            same = same && xa[d] >= 0 && xa[d] <= A.cells[d];
                         same = same && xa[dA] == eA * A.cells[dA] && nodeAt(A, xa) == nodeAt(B, xb);
                     }
                 }
@@ -73,41 +84,86 @@ std::optional<LatticeTransform> matchSides(const BlockLattice& A, int dA, int eA
     return std::nullopt;
 }
 
-std::vector<Glue> findGlues(const std::vector<BlockLattice>& blocks,
-                            const std::vector<Index>& bodyOfBlock) {
+/// The 12 block edges as (smaller, larger) end-node pairs, and how many blocks have each.
+using EdgeKey = std::pair<Index, Index>;
+
+EdgeKey edgeKey(Index a, Index b) {
+    return {std::min(a, b), std::max(a, b)};
+}
+
+std::array<EdgeKey, 4> sideEdges(const BlockLattice& blk, int axis, int end) {
+    const int nu = blk.cells[(axis + 1) % 3], nv = blk.cells[(axis + 2) % 3];
+    auto at = [&](int u, int v) { return nodeAt(blk, sideNode(blk, axis, end, u, v)); };
+    return {edgeKey(at(0, 0), at(nu, 0)), edgeKey(at(0, nv), at(nu, nv)),
+            edgeKey(at(0, 0), at(0, nv)), edgeKey(at(nu, 0), at(nu, nv))};
+}
+
+GlueSet findGlues(const std::vector<BlockLattice>& blocks, const std::vector<Index>& bodyOfBlock) {
     struct Side {
         Index block;
         int axis, end;
     };
     std::map<std::array<Index, 4>, std::vector<Side>> byCorners;
+    std::map<EdgeKey, int> blocksAtEdge;
     for (std::size_t b = 0; b < blocks.size(); ++b) {
+        std::map<EdgeKey, int> own;  // each of the block's 12 edges once
         for (int axis = 0; axis < 3; ++axis) {
             for (int end = 0; end <= 1; ++end) {
                 byCorners[sideCorners(blocks[b], axis, end)].push_back(
                     {static_cast<Index>(b), axis, end});
+                for (const EdgeKey& e : sideEdges(blocks[b], axis, end)) own[e] = 1;
             }
         }
+        for (const auto& [e, one] : own) blocksAtEdge[e] += one;
     }
-    std::vector<Glue> glues;
+    struct Candidate {
+        int irregular;  // edges of the shared face where 3 or ≥ 5 blocks meet
+        Glue glue;
+        std::array<EdgeKey, 4> edges;
+    };
+    std::vector<Candidate> found;
     for (const auto& [corners, sides] : byCorners) {
         for (std::size_t p = 0; p < sides.size(); ++p) {
             for (std::size_t q = p + 1; q < sides.size(); ++q) {
                 const Side& s = sides[p];
                 const Side& r = sides[q];
                 if (s.block == r.block || bodyOfBlock[s.block] != bodyOfBlock[r.block]) continue;
-                const auto T = matchSides(blocks[s.block], s.axis, s.end, blocks[r.block], r.axis,
-                                          r.end);
-                if (T) glues.push_back({s.block, r.block, *T});
+                const auto T =
+                    matchSides(blocks[s.block], s.axis, s.end, blocks[r.block], r.axis, r.end);
+                if (!T) continue;
+                int irregular = 0;
+                const auto edges = sideEdges(blocks[s.block], s.axis, s.end);
+                for (const EdgeKey& e : edges) {
+                    const int valence = blocksAtEdge[e];
+                    irregular += (valence == 3 || valence >= 5) ? 1 : 0;
+                }
+                found.push_back({irregular, {s.block, r.block, *T}, edges});
             }
         }
     }
-    std::sort(glues.begin(), glues.end(), [](const Glue& x, const Glue& y) {
-        return std::tie(x.a, x.b, x.bToA.t) < std::tie(y.a, y.b, y.bToA.t);
+    // Search order: faces away from irregular block edges first. Around an edge where 3 blocks
+    // meet (an O-grid core corner) at most one of the 3 faces can lie inside a space, so such
+    // faces are the likely interfaces; trying the others first makes the first solution the
+    // search finds a good one (the annulus ring before the core–annulus faces).
+    std::sort(found.begin(), found.end(), [](const Candidate& x, const Candidate& y) {
+        return std::tie(x.irregular, x.glue.a, x.glue.b, x.glue.bToA.t) <
+               std::tie(y.irregular, y.glue.a, y.glue.b, y.glue.bToA.t);
     });
-    return glues;
+    GlueSet set;
+    std::map<EdgeKey, std::vector<int>> gluesAtEdge;
+    for (std::size_t g = 0; g < found.size(); ++g) {
+        set.glues.push_back(found[g].glue);
+        for (const EdgeKey& e : found[g].edges) gluesAtEdge[e].push_back(static_cast<int>(g));
+    }
+    for (const auto& [edge, at] : gluesAtEdge) {
+        if (blocksAtEdge[edge] == 3 && at.size() == 3) set.triples.push_back({at[0], at[1], at[2]});
+    }
+    return set;
 }
 
-int floorMod(int x, int p) { return ((x % p) + p) % p; }
+int floorMod(int x, int p) {
+    return ((x % p) + p) % p;
+}
 
 /// Do intervals [lo1, lo1+len1) and [lo2, lo2+len2) meet (modulo p when p > 0)?
 bool intervalsMeet(int lo1, int len1, int lo2, int len2, int p) {
@@ -137,8 +193,15 @@ struct Score {
 
 class Search {
   public:
-    Search(const std::vector<BlockLattice>& blocks, const std::vector<Glue>& glues)
-        : blocks_(blocks), glues_(glues) {}
+    Search(const std::vector<BlockLattice>& blocks, const GlueSet& set)
+        : blocks_(blocks),
+          glues_(set.glues),
+          triples_(set.triples),
+          inTriple_(set.glues.size(), 0) {
+        for (const auto& t : triples_) {
+            for (int g : t) inTriple_[g] = 1;
+        }
+    }
 
     Partition run(bool& exhaustive) {
         Partition p;
@@ -192,7 +255,8 @@ class Search {
             for (std::size_t y = x + 1; y < members.size(); ++y) {
                 const Int3 lo2 = lower(p, members[y]), e2 = extent(p, members[y]);
                 bool meet = true;
-                for (int d = 0; d < 3; ++d) meet = meet && intervalsMeet(lo1[d], e1[d], lo2[d], e2[d], P[d]);
+                for (int d = 0; d < 3; ++d)
+                    meet = meet && intervalsMeet(lo1[d], e1[d], lo2[d], e2[d], P[d]);
                 if (meet) return false;
             }
         }
@@ -236,7 +300,8 @@ class Search {
             long cells = 0;
             for (std::size_t c = 0; c < blocks_.size(); ++c) {
                 if (p.rep[c] != static_cast<Index>(r)) continue;
-                const Int3 l = lower(p, static_cast<Index>(c)), e = extent(p, static_cast<Index>(c));
+                const Int3 l = lower(p, static_cast<Index>(c)),
+                           e = extent(p, static_cast<Index>(c));
                 for (int d = 0; d < 3; ++d) {
                     lo[d] = std::min(lo[d], l[d]);
                     hi[d] = std::max(hi[d], l[d] + e[d]);
@@ -253,15 +318,30 @@ class Search {
         return s;
     }
 
+    /// Most faces a completion of `p` can have inside spaces, once faces before `g` are decided
+    /// (those not inside by now never will be: they were cut). Each triple admits one face.
+    int upperBound(std::size_t g, const Partition& p) const {
+        std::vector<char> inside(glues_.size()), open(glues_.size());
+        int bound = 0;
+        for (std::size_t k = 0; k < glues_.size(); ++k) {
+            inside[k] = p.rep[glues_[k].a] == p.rep[glues_[k].b];
+            open[k] = !inside[k] && k >= g;
+            bound += inside[k] || (open[k] && !inTriple_[k]) ? 1 : 0;
+        }
+        for (const auto& t : triples_) {
+            int done = 0, left = 0;
+            for (int k : t) {
+                done += inside[k];
+                left += open[k];
+            }
+            bound += std::min(left, std::max(0, 1 - done));
+        }
+        return bound;
+    }
+
     void dfs(std::size_t g, const Partition& p) {
         if (++steps_ > kMaxSearchSteps) return;
-        int honoured = 0, open = 0;
-        for (std::size_t k = 0; k < glues_.size(); ++k) {
-            const bool inside = p.rep[glues_[k].a] == p.rep[glues_[k].b];
-            honoured += inside ? 1 : 0;
-            open += !inside && k >= g ? 1 : 0;
-        }
-        if (best_ && honoured + open < bestScore_.honoured) return;
+        if (best_ && upperBound(g, p) < bestScore_.honoured) return;
         if (g == glues_.size()) {
             const auto s = evaluate(p);
             if (s && (!best_ || s->betterThan(bestScore_))) {
@@ -284,6 +364,8 @@ class Search {
 
     const std::vector<BlockLattice>& blocks_;
     const std::vector<Glue>& glues_;
+    const std::vector<std::array<int, 3>>& triples_;
+    std::vector<char> inTriple_;
     std::vector<std::pair<Index, Index>> cuts_;
     std::optional<Partition> best_;
     Score bestScore_;
@@ -302,9 +384,10 @@ Int3 GluedSpace::cellOf(std::size_t entry, const Int3& blockCell) const {
 
 GluingResult glueBlocks(const std::vector<BlockLattice>& blocks,
                         const std::vector<Index>& bodyOfBlock) {
-    const std::vector<Glue> glues = findGlues(blocks, bodyOfBlock);
+    const GlueSet set = findGlues(blocks, bodyOfBlock);
+    const std::vector<Glue>& glues = set.glues;
     GluingResult result;
-    const Partition p = Search(blocks, glues).run(result.exhaustive);
+    const Partition p = Search(blocks, set).run(result.exhaustive);
     result.sharedFaces = static_cast<int>(glues.size());
     for (const Glue& g : glues) result.honouredFaces += p.rep[g.a] == p.rep[g.b] ? 1 : 0;
 

@@ -10,7 +10,10 @@
 // periodic indices) exactly, without holes or overlaps. Among the partitions of the blocks into
 // consistent sets, gluing picks the one that honours the most shared faces (so the fewest
 // faces are left as interfaces between spaces), then the fewest spaces, then the largest
-// spaces. The search is exact up to kMaxSearchSteps steps and keeps the best so far beyond.
+// spaces. The search (branch and bound over the shared faces: inside a space or not) tries
+// faces away from irregular block edges first and bounds with "one face per triple around an
+// edge where three blocks meet"; it is exact up to kMaxSearchSteps steps and keeps the best
+// partition found beyond (reported, never inconsistent).
 //
 // Output: spaces sorted by (body, first block); each space's frame is its first block's frame
 // (block_indexing.hpp), shifted so that cells lie in [0, cells); periodic indices wrap.
@@ -28,9 +31,9 @@ inline constexpr long kMaxSearchSteps = 200000;
 
 struct GluedSpace {
     Index body = 0;
-    std::vector<Index> blocks;               ///< ascending block indices
-    std::vector<LatticeTransform> toSpace;   ///< per entry of `blocks`: block → space nodes
-    Int3 cells = {0, 0, 0};                  ///< space extent (the period along periodic axes)
+    std::vector<Index> blocks;              ///< ascending block indices
+    std::vector<LatticeTransform> toSpace;  ///< per entry of `blocks`: block → space nodes
+    Int3 cells = {0, 0, 0};                 ///< space extent (the period along periodic axes)
     std::array<bool, 3> periodic = {false, false, false};
 
     /// Space cell of a block cell, wrapped into [0, cells) along periodic axes.
@@ -39,8 +42,8 @@ struct GluedSpace {
 
 struct GluingResult {
     std::vector<GluedSpace> spaces;
-    int sharedFaces = 0;   ///< faces shared by two blocks of one body
-    int honouredFaces = 0;  ///< of which inside one space
+    int sharedFaces = 0;     ///< faces shared by two blocks of one body
+    int honouredFaces = 0;   ///< of which inside one space
     bool exhaustive = true;  ///< false if the search stopped at kMaxSearchSteps
 };
 

@@ -39,8 +39,8 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
     for (Index a = 0; a < pf.size(); ++a) bodyOfSpace[pf.space[a]] = pf.body[a];
 
     out << "gsph-preproc " << pf.provenance.toolVersion << ": " << pf.provenance.sourceFile
-        << (pf.provenance.parameters.empty() ? "" : " (" + pf.provenance.parameters + ")")
-        << " -> " << output << "\n";
+        << (pf.provenance.parameters.empty() ? "" : " (" + pf.provenance.parameters + ")") << " -> "
+        << output << "\n";
     out << format("  particles  %ld in %zu space%s, %zu bod%s, from %zu hexahedra\n",
                   static_cast<long>(pf.size()), spaces, spaces == 1 ? "" : "s", pf.bodies.size(),
                   pf.bodies.size() == 1 ? "y" : "ies", stats.hexes);
@@ -51,14 +51,16 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
             if (sp.periodic[d]) periodic += "ijk"[d];
         }
         const std::string cells = format("%dx%dx%d", sp.cells[0], sp.cells[1], sp.cells[2]);
-        out << format("  space %-3zu body %-3d cells %-16s periodic %-4s particles %-9ld gmsh volumes %s\n",
-                      s, bodyOfSpace[s], cells.c_str(), periodic.empty() ? "-" : periodic.c_str(),
-                      perSpace[s], join(stats.spaceVolumes[s]).c_str());
+        out << format(
+            "  space %-3zu body %-3d cells %-16s periodic %-4s particles %-9ld gmsh volumes %s\n",
+            s, bodyOfSpace[s], cells.c_str(), periodic.empty() ? "-" : periodic.c_str(),
+            perSpace[s], join(stats.spaceVolumes[s]).c_str());
     }
     for (std::size_t b = 0; b < pf.bodies.size(); ++b) {
         const BodyInfo& body = pf.bodies[b];
-        const std::string name = body.name.empty() ? (body.sourceTag < 0 ? "(whole mesh)" : "(unnamed)")
-                                                   : "'" + body.name + "'";
+        const std::string name = body.name.empty()
+                                     ? (body.sourceTag < 0 ? "(whole mesh)" : "(unnamed)")
+                                     : "'" + body.name + "'";
         out << format("  body %-3zu %-20s particles %-9ld volume %.6e m^3\n", b, name.c_str(),
                       perBody[b], bodyVolume[b]);
     }

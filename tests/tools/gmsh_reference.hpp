@@ -37,7 +37,8 @@ inline GmshHexes gmshHexes(const std::string& path,
                            const std::vector<std::pair<std::string, double>>& parameters = {},
                            const std::string& writeMsh = "") {
     std::string open = path;
-    const std::string wrapper = std::filesystem::temp_directory_path() / ("gsph-test-wrapper-" + std::to_string(::getpid()) + ".geo");
+    const std::string wrapper = std::filesystem::temp_directory_path() /
+                                ("gsph-test-wrapper-" + std::to_string(::getpid()) + ".geo");
     if (!parameters.empty()) {
         std::ofstream out(wrapper);
         for (const auto& [name, value] : parameters) {

@@ -42,7 +42,8 @@ class MeshBuilder {
                     if (skipCell && skipCell(i, j, k)) continue;
                     std::array<Index, 8> corner{};  // corner bits order
                     for (int c = 0; c < 8; ++c) {
-                        corner[c] = node(key(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1)), position);
+                        corner[c] =
+                            node(key(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1)), position);
                     }
                     hexes.push_back(shuffledGmshOrder(corner));
                 }
@@ -113,7 +114,9 @@ class MeshBuilder {
 
 /// Cartesian key/position helpers: node key = global lattice index, position = spacing * key.
 inline std::function<MeshBuilder::Key(int, int, int)> offsetKey(Int3 origin) {
-    return [origin](int i, int j, int k) { return MeshBuilder::Key{origin[0] + i, origin[1] + j, origin[2] + k}; };
+    return [origin](int i, int j, int k) {
+        return MeshBuilder::Key{origin[0] + i, origin[1] + j, origin[2] + k};
+    };
 }
 
 }  // namespace gsph::test

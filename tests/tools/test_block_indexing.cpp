@@ -15,7 +15,9 @@ namespace {
 
 using test::MeshBuilder;
 
-Vec3 boxPosition(const MeshBuilder::Key& k) { return Vec3(1.0 * k[0], 2.0 * k[1], 3.0 * k[2]); }
+Vec3 boxPosition(const MeshBuilder::Key& k) {
+    return Vec3(1.0 * k[0], 2.0 * k[1], 3.0 * k[2]);
+}
 
 BlockLattice indexOnly(const HexMesh& mesh) {
     const NodeHexAdjacency adjacency(static_cast<Index>(mesh.nodes.size()), mesh.hexes);
@@ -24,7 +26,8 @@ BlockLattice indexOnly(const HexMesh& mesh) {
 
 HexCorners cornersOf(const HexMesh& mesh, const BlockLattice& b, int i, int j, int k) {
     HexCorners x;
-    for (int c = 0; c < 8; ++c) x[c] = mesh.nodes[b.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))];
+    for (int c = 0; c < 8; ++c)
+        x[c] = mesh.nodes[b.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))];
     return x;
 }
 
@@ -39,7 +42,8 @@ TEST(BlockIndexing, ShuffledBoxGivesItsLattice) {
         for (int k = 0; k <= 5; ++k) {
             for (int j = 0; j <= 4; ++j) {
                 for (int i = 0; i <= 3; ++i) {
-                    EXPECT_NEAR((mesh.nodes[b.node(i, j, k)] - boxPosition({i, j, k})).norm(), 0.0, 1e-15);
+                    EXPECT_NEAR((mesh.nodes[b.node(i, j, k)] - boxPosition({i, j, k})).norm(), 0.0,
+                                1e-15);
                 }
             }
         }
@@ -49,7 +53,8 @@ TEST(BlockIndexing, ShuffledBoxGivesItsLattice) {
                 for (int i = 0; i < 3; ++i) {
                     auto expected = mesh.hexes[b.hex(i, j, k)];
                     std::array<Index, 8> corners{};
-                    for (int c = 0; c < 8; ++c) corners[c] = b.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
+                    for (int c = 0; c < 8; ++c)
+                        corners[c] = b.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
                     std::sort(expected.begin(), expected.end());
                     std::sort(corners.begin(), corners.end());
                     EXPECT_EQ(expected, corners);
@@ -63,7 +68,9 @@ TEST(BlockIndexing, FrameIsRightHandedAndFollowsXyz) {
     // A graded block turned 90° about z: lattice axis 0 of the map runs along +y. Indexing must
     // still give i along +x, j along +y, k along +z, with positive Jacobians everywhere.
     auto graded = [](int i) { return std::pow(1.3, i); };
-    auto position = [&](const MeshBuilder::Key& k) { return Vec3(-2.0 * k[1], graded(k[0]), 0.5 * k[2]); };
+    auto position = [&](const MeshBuilder::Key& k) {
+        return Vec3(-2.0 * k[1], graded(k[0]), 0.5 * k[2]);
+    };
     for (unsigned seed = 1; seed <= 4; ++seed) {
         MeshBuilder builder(seed);
         builder.addBlock(1, {6, 3, 2}, test::offsetKey({0, 0, 0}), position);
@@ -151,7 +158,9 @@ TEST(BlockIndexing, ClosedRingHasNoCornerAndIsRefused) {
     MeshBuilder builder;
     builder.addBlock(
         1, {2, nphi, 1},
-        [](int i, int j, int k) { return MeshBuilder::Key{i, j % 8, k}; },
+        [](int i, int j, int k) {
+            return MeshBuilder::Key{i, j % 8, k};
+        },
         [](const MeshBuilder::Key& k) {
             const double r = 1.0 + k[0], phi = 2.0 * M_PI * k[1] / 8.0;
             return Vec3(r * std::cos(phi), r * std::sin(phi), 1.0 * k[2]);
@@ -190,7 +199,8 @@ TEST(BlockIndexing, ReorientKeepsCellsAndNodesTogether) {
                     EXPECT_GT(minCornerJacobian(x), 0.0);  // rotations keep right-handedness
                     auto expected = mesh.hexes[r.hex(i, j, k)];
                     std::array<Index, 8> corners{};
-                    for (int c = 0; c < 8; ++c) corners[c] = r.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
+                    for (int c = 0; c < 8; ++c)
+                        corners[c] = r.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1));
                     std::sort(expected.begin(), expected.end());
                     std::sort(corners.begin(), corners.end());
                     EXPECT_EQ(expected, corners);

@@ -38,7 +38,8 @@ HexMesh twoBodies() {
             end.quads.push_back({builder.nodeOf({0, j, k}), builder.nodeOf({0, j + 1, k}),
                                  builder.nodeOf({0, j + 1, k + 1}), builder.nodeOf({0, j, k + 1})});
             far.quads.push_back({builder.nodeOf({22, j, k}), builder.nodeOf({22, j + 1, k}),
-                                 builder.nodeOf({22, j + 1, k + 1}), builder.nodeOf({22, j, k + 1})});
+                                 builder.nodeOf({22, j + 1, k + 1}),
+                                 builder.nodeOf({22, j, k + 1})});
         }
     }
     raw.surfaceGroups = {end, far};

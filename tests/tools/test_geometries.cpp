@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "conversion.hpp"
+#include "core/error.hpp"
 #include "gmsh_input.hpp"
 #include "gmsh_reference.hpp"
 #include "particle_checks.hpp"
@@ -19,7 +20,9 @@ namespace {
 
 using Parameters = std::vector<std::pair<std::string, double>>;
 
-std::string geometry(const std::string& name) { return std::string(GSPH_SOURCE_DIR) + "/geometries/" + name; }
+std::string geometry(const std::string& name) {
+    return std::string(GSPH_SOURCE_DIR) + "/geometries/" + name;
+}
 
 Conversion convert(const std::string& path, const Parameters& parameters = {}) {
     std::vector<std::string> warnings;
@@ -37,7 +40,8 @@ double totalVolume(const ParticleFile& f, Index body = -1) {
 }
 
 /// The checks shared by every sample: particle ↔ gmsh hex, centre, volume, lattice, neighbours.
-void expectMatchesGmsh(const std::string& path, const Conversion& c, const Parameters& parameters = {}) {
+void expectMatchesGmsh(const std::string& path, const Conversion& c,
+                       const Parameters& parameters = {}) {
     const test::GmshHexes g = test::gmshHexes(path, parameters);
     const ParticleFile& f = c.particles;
     ASSERT_EQ(static_cast<std::size_t>(f.size()), g.tags.size()) << "one particle per hex";
@@ -78,9 +82,11 @@ void expectMatchesGmsh(const std::string& path, const Conversion& c, const Param
                         const auto& p = g.nodes[hexOf[at(i, j, k)]];
                         const auto& q = g.nodes[hexOf[at(m[0], m[1], m[2])]];
                         int shared = 0;
-                        for (std::size_t x : p) shared += std::count(q.begin(), q.end(), x) > 0 ? 1 : 0;
-                        ASSERT_EQ(shared, 4) << "space " << s << " cell " << i << "," << j << "," << k
-                                             << " and its +" << "ijk"[d] << " neighbour";
+                        for (std::size_t x : p)
+                            shared += std::count(q.begin(), q.end(), x) > 0 ? 1 : 0;
+                        ASSERT_EQ(shared, 4) << "space " << s << " cell " << i << "," << j << ","
+                                             << k << " and its +"
+                                             << "ijk"[d] << " neighbour";
                     }
                 }
             }
@@ -89,7 +95,9 @@ void expectMatchesGmsh(const std::string& path, const Conversion& c, const Param
     }
 }
 
-int periodicAxes(const LatticeSpace& s) { return s.periodic[0] + s.periodic[1] + s.periodic[2]; }
+int periodicAxes(const LatticeSpace& s) {
+    return s.periodic[0] + s.periodic[1] + s.periodic[2];
+}
 
 TEST(Geometries, GradedBar) {
     const std::string path = geometry("graded_bar.geo");
@@ -218,9 +226,10 @@ std::vector<double> observedOrders(const std::string& name, const Parameters& fi
         const Conversion c = convert(geometry(name), p);
         errors.push_back(std::abs(totalVolume(c.particles) - exact) / exact);
     }
-    const std::vector<double> orders = {std::log2(errors[0] / errors[1]), std::log2(errors[1] / errors[2])};
-    std::printf("%s: relative volume errors %.3e %.3e %.3e, observed orders %.3f %.3f\n", name.c_str(),
-                errors[0], errors[1], errors[2], orders[0], orders[1]);
+    const std::vector<double> orders = {std::log2(errors[0] / errors[1]),
+                                        std::log2(errors[1] / errors[2])};
+    std::printf("%s: relative volume errors %.3e %.3e %.3e, observed orders %.3f %.3f\n",
+                name.c_str(), errors[0], errors[1], errors[2], orders[0], orders[1]);
     return orders;
 }
 
@@ -233,6 +242,61 @@ TEST(Geometries, CurvedBlocksConvergeAtSecondOrder) {
     for (double p : observedOrders("taylor_bar.geo", {{"L", L}, {"nz", 1}}, M_PI * R * R * L)) {
         EXPECT_GE(p, 1.8);
     }
+}
+
+}  // namespace
+}  // namespace gsph::preproc
+
+namespace gsph::preproc {
+namespace {
+
+TEST(Geometries, ParametersDoNotLeakBetweenCalls) {
+    // gmsh keeps some parser state for the whole process; readHexMesh must not let one call's
+    // parameters (or one .geo's DefineConstant values) reach the next call.
+    const std::string taylor = geometry("taylor_bar.geo");
+    const double before = totalVolume(convert(taylor).particles);
+    convert(geometry("quarter_cylinder.geo"), {{"R", 0.05}, {"refine", 2}});
+    convert(taylor, {{"L", 0.001}, {"nz", 1}});
+    const double after = totalVolume(convert(taylor).particles);
+    EXPECT_EQ(before, after);  // the same mesh, converted the same way: bit-identical
+}
+
+/// Reads and converts a fixture from tests/data; returns the error message, "" if none.
+template <class Error>
+std::string errorOf(const std::string& file, const Parameters& parameters = {}) {
+    const std::string path = std::string(GSPH_SOURCE_DIR) + "/tests/data/" + file;
+    try {
+        std::vector<std::string> warnings;
+        convertHexMesh(readHexMesh(path, MeshReadOptions{parameters}, warnings));
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_EQ(what.rfind(path + ": ", 0), 0u)
+            << "the message must start with the file: " << what;
+        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        return what;
+    }
+    ADD_FAILURE() << file << ": no error";
+    return "";
+}
+
+TEST(PreprocErrors, BadInputsGiveClearErrors) {
+    EXPECT_NE(errorOf<InputError>("missing.geo").find("no such file"), std::string::npos);
+    EXPECT_NE(errorOf<InputError>("bad_syntax.geo").find("line 3: syntax error"),
+              std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("tetrahedra.geo").find("4-node tetrahedra"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("mixed.msh").find("6-node prisms"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("unstructured_hex.geo").find("not a structured hex block"),
+              std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("inverted.msh").find("element 2 in volume 1 is inverted"),
+              std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("folded.msh").find("folds"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("empty.msh").find("no hexahedra"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("no_volume.geo").find("no hexahedra"), std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("ungrouped_volume.geo").find("volume 2 is in no physical volume"),
+              std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("bad_transfinite.geo").find("transfinite"), std::string::npos);
+    EXPECT_NE(errorOf<InputError>("inverted.msh", {{"refine", 2}}).find(".geo files only"),
+              std::string::npos);
 }
 
 }  // namespace

@@ -42,7 +42,8 @@ TEST(HexGeometry, FrustumVolume) {
     // V = (A1 + A2 + √(A1 A2)) h / 3.
     const double s = 0.4;
     HexCorners x = unitCube();
-    for (int c = 4; c < 8; ++c) x[c] = Vec3(0.5 + s * (x[c][0] - 0.5), 0.5 + s * (x[c][1] - 0.5), 1.0);
+    for (int c = 4; c < 8; ++c)
+        x[c] = Vec3(0.5 + s * (x[c][0] - 0.5), 0.5 + s * (x[c][1] - 0.5), 1.0);
     EXPECT_NEAR(hexVolume(x), (1.0 + s * s + s) / 3.0, 1e-14);
 }
 
@@ -54,7 +55,8 @@ TEST(HexGeometry, TwistedHexVolume) {
     for (int c = 0; c < 8; ++c) {
         const Vec3 p((c & 1) - 0.5, (c >> 1 & 1) - 0.5, c >> 2 & 1);
         const double a = (c >> 2 & 1) ? alpha : 0.0;
-        x[c] = Vec3(std::cos(a) * p[0] - std::sin(a) * p[1], std::sin(a) * p[0] + std::cos(a) * p[1], p[2]);
+        x[c] = Vec3(std::cos(a) * p[0] - std::sin(a) * p[1],
+                    std::sin(a) * p[0] + std::cos(a) * p[1], p[2]);
     }
     EXPECT_NEAR(hexVolume(x), (2.0 + std::cos(alpha)) / 3.0, 1e-14);
     EXPECT_GT(minCornerJacobian(x), 0.0);

@@ -196,6 +196,19 @@ TEST(ParticleFile, ReadErrorsNameTheFile) {
     }
 }
 
+TEST(ParticleFile, ProvenanceOfASource) {
+    test::TempDir dir;
+    std::ofstream(dir / "model.geo") << "Point(1) = {0, 0, 0};\n";
+    const Provenance p = provenanceOf("gsph-test", "1.2.3", dir / "model.geo", "refine=2");
+    EXPECT_EQ(p.tool, "gsph-test");
+    EXPECT_EQ(p.toolVersion, "1.2.3");
+    EXPECT_EQ(p.sourceFile, (dir / "model.geo").string());
+    EXPECT_EQ(p.sourceSha256, sha256Hex("Point(1) = {0, 0, 0};\n"));
+    EXPECT_EQ(p.parameters, "refine=2");
+    EXPECT_EQ(p.units, "SI");
+    EXPECT_THROW(provenanceOf("gsph-test", "1.2.3", dir / "missing.geo"), IoError);
+}
+
 TEST(ParticleFile, BuildReference) {
     const ParticleFile f = sampleFile();
     const std::vector<double> rho = {7850.0, 8960.0};

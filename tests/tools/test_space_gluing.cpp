@@ -15,7 +15,9 @@ namespace {
 
 using test::MeshBuilder;
 
-Vec3 unitPosition(const MeshBuilder::Key& k) { return Vec3(k[0], k[1], k[2]); }
+Vec3 unitPosition(const MeshBuilder::Key& k) {
+    return Vec3(k[0], k[1], k[2]);
+}
 
 struct Glued {
     HexMesh mesh;
@@ -118,7 +120,8 @@ TEST(SpaceGluing, GridOfBlocksFormsOneSpace) {
     for (int c = 0; c < 2; ++c) {
         for (int b = 0; b < 3; ++b) {
             for (int a = 0; a < 3; ++a) {
-                builder.addBlock(tag++, {2, 3, 1}, test::offsetKey({2 * a, 3 * b, c}), unitPosition);
+                builder.addBlock(tag++, {2, 3, 1}, test::offsetKey({2 * a, 3 * b, c}),
+                                 unitPosition);
             }
         }
     }
@@ -160,9 +163,12 @@ TEST(SpaceGluing, TurnedBlockStillGlues) {
 /// O-grid section extruded along z: a core of n×n cells covering [-c, c]², and 4 annulus
 /// blocks of nr (radial) × n (angular) cells out to radius R. Node keys are shared on block
 /// faces, so the blocks are conforming.
-void addOgrid(MeshBuilder& builder, int n, int nr, int nz, bool withCore) {
+void addOgrid(MeshBuilder& builder, int n, int nr, int nz, bool withCore, int segment = 0) {
+    const int k0 = segment * nz, tag0 = 5 * segment;
     const double c = 0.4, R = 1.0;
-    auto corePoint = [=](int i, int j) { return Vec3(-c + 2 * c * i / n, -c + 2 * c * j / n, 0.0); };
+    auto corePoint = [=](int i, int j) {
+        return Vec3(-c + 2 * c * i / n, -c + 2 * c * j / n, 0.0);
+    };
     // Core boundary, counterclockwise from (c, -c), at angular parameter a ∈ [0, 4n).
     auto boundaryKey = [=](int a) {
         const int q = a / n, t = a % n;
@@ -174,9 +180,9 @@ void addOgrid(MeshBuilder& builder, int n, int nr, int nz, bool withCore) {
             const int a = (q * n + t) % (4 * n);
             if (r == 0) {
                 const auto ij = boundaryKey(a);
-                return MeshBuilder::Key{ij[0], ij[1], k};
+                return MeshBuilder::Key{ij[0], ij[1], k0 + k};
             }
-            return MeshBuilder::Key{1000 + r, a, k};
+            return MeshBuilder::Key{1000 + r, a, k0 + k};
         };
     };
     auto position = [=](const MeshBuilder::Key& k) {
@@ -189,10 +195,14 @@ void addOgrid(MeshBuilder& builder, int n, int nr, int nz, bool withCore) {
         return Vec3((1 - s) * inner + s * outer + Vec3(0, 0, 0.1 * k[2]));
     };
     if (withCore) {
-        builder.addBlock(1, {n, n, nz}, [](int i, int j, int k) { return MeshBuilder::Key{i, j, k}; },
-                         position);
+        builder.addBlock(
+            tag0 + 1, {n, n, nz},
+            [=](int i, int j, int k) {
+                return MeshBuilder::Key{i, j, k0 + k};
+            },
+            position);
     }
-    for (int q = 0; q < 4; ++q) builder.addBlock(2 + q, {nr, n, nz}, key(q), position);
+    for (int q = 0; q < 4; ++q) builder.addBlock(tag0 + 2 + q, {nr, n, nz}, key(q), position);
 }
 
 TEST(SpaceGluing, AnnulusClosesIntoAPeriodicSpace) {
@@ -233,6 +243,25 @@ TEST(SpaceGluing, OgridCoreStaysApartFromThePeriodicAnnulus) {
         EXPECT_TRUE(g.result.exhaustive);
         expectConsistentSpace(g, core);
         expectConsistentSpace(g, ring);
+    }
+}
+
+TEST(SpaceGluing, StackedOgridsGlueIntoACoreAndAnAnnulus) {
+    // An O-grid cylinder cut along its axis into segments (5 blocks each, as a user grading the
+    // rod in segments would build it): the cores stack into one space, the annulus blocks into
+    // one periodic space; only the core–annulus faces stay interfaces.
+    for (int segments : {3, 10}) {
+        MeshBuilder builder(2);
+        for (int s = 0; s < segments; ++s) addOgrid(builder, 2, 1, 1, true, s);
+        const Glued g = glue(builder.build());
+        ASSERT_EQ(g.result.spaces.size(), 2u) << segments << " segments";
+        EXPECT_EQ(g.result.spaces[0].cells, (Int3{2, 2, segments}));
+        EXPECT_EQ(g.result.spaces[0].blocks.size(), static_cast<std::size_t>(segments));
+        EXPECT_EQ(g.result.spaces[1].blocks.size(), static_cast<std::size_t>(4 * segments));
+        EXPECT_EQ(g.result.sharedFaces, 8 * segments + 5 * (segments - 1));
+        EXPECT_EQ(g.result.honouredFaces, g.result.sharedFaces - 4 * segments);
+        EXPECT_TRUE(g.result.exhaustive) << segments << " segments";
+        for (const GluedSpace& s : g.result.spaces) expectConsistentSpace(g, s);
     }
 }
 

@@ -1,0 +1,191 @@
+// SPDX-License-Identifier: MIT
+// gsph-preproc as a process: a sample converts with a summary and a traceable file; every bad
+// input gives one line on stderr naming the file and the fault, exit status 1, and no file.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "core/version.hpp"
+#include "io/particle_file.hpp"
+#include "io/sha256.hpp"
+#include "temp_dir.hpp"
+
+namespace gsph {
+namespace {
+
+struct ProcessResult {
+    int status = -1;
+    std::string out, err;
+};
+
+std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string source(const std::string& relative) {
+    return std::string(GSPH_SOURCE_DIR) + "/" + relative;
+}
+
+/// 'text' for the shell (built by appending: GCC 12 warns falsely on "'" + std::string&&).
+std::string quote(const std::string& text) {
+    std::string q(1, '\'');
+    q.append(text);
+    q.push_back('\'');
+    return q;
+}
+
+/// Runs gsph-preproc with `args`; stdout and stderr go to a scratch folder of their own.
+ProcessResult preproc(const std::string& args) {
+    test::TempDir logs;
+    const std::string command = quote(GSPH_PREPROC) + " " + args + " > " +
+                                quote((logs / "out").string()) + " 2> " +
+                                quote((logs / "err").string());
+    const int raw = std::system(command.c_str());
+    ProcessResult r;
+    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    r.out = slurp(logs / "out");
+    r.err = slurp(logs / "err");
+    return r;
+}
+
+TEST(PreprocCli, ConvertsASampleWithSummaryAndProvenance) {
+    test::TempDir dir;
+    const std::string input = source("geometries/graded_bar.geo");
+    const auto output = dir / "bar.h5";
+    const ProcessResult r = preproc(quote(input) + " -o " + quote(output.string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "the samples convert without warnings";
+    for (const char* expected :
+         {"particles  320 in 1 space", "cells 20x4x4", "'bar'", "spacing    hex edge length from",
+          "'clamp' 16", "'load' 16", "time       read+mesh"}) {
+        EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
+    }
+    const ParticleFile f = readParticleFile(output);
+    EXPECT_EQ(f.size(), 320);
+    EXPECT_EQ(f.provenance.tool, "gsph-preproc");
+    EXPECT_EQ(f.provenance.toolVersion, kVersion);
+    EXPECT_EQ(f.provenance.sourceFile, input);
+    EXPECT_EQ(f.provenance.sourceSha256, sha256File(input));
+    EXPECT_EQ(f.provenance.units, "SI");
+    EXPECT_EQ(dir.entries(), 1);
+}
+
+TEST(PreprocCli, ParametersAndReplacingAnOutput) {
+    test::TempDir dir;
+    const auto output = dir / "bar.h5";
+    std::ofstream(output) << "an older file";
+    const ProcessResult r =
+        preproc(quote(source("geometries/graded_bar.geo")) + " -o " + quote(output.string()) +
+                " --set refine=2 --set grading=1.05 --quiet");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    const ParticleFile f = readParticleFile(output);
+    EXPECT_EQ(f.size(), 320 * 8);
+    EXPECT_EQ(f.provenance.parameters, "refine=2,grading=1.05");
+    EXPECT_EQ(dir.entries(), 1);
+}
+
+TEST(PreprocCli, OutputReadableByH5py) {
+    test::TempDir dir;
+    const auto output = dir / "taylor.h5";
+    ASSERT_EQ(preproc(quote(source("geometries/taylor_bar.geo")) + " -o " + quote(output.string()) +
+                      " -q")
+                  .status,
+              0);
+    const std::string script =
+        "import h5py\n"
+        "f = h5py.File('" +
+        output.string() +
+        "', 'r')\n"
+        "print(f['particles/X'].shape[0], f['spaces/periodic'][:].tolist(),\n"
+        "      f['spaces/cells'][:].tolist(), len(f['sets/impact']),\n"
+        "      [n.decode() for n in f['bodies/name'][:]], f.attrs['units'])\n";
+    std::ofstream(dir / "check.py") << script;
+    test::TempDir logs;
+    const std::string command = "/usr/bin/python3 " + quote((dir / "check.py").string()) + " > " +
+                                quote((logs / "out").string()) + " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << slurp(logs / "out");
+    EXPECT_EQ(slurp(logs / "out"),
+              "7680 [[0, 0, 0], [0, 1, 0]] [[8, 8, 40], [4, 32, 40]] 192 ['rod'] SI\n");
+}
+
+/// A failing run: status 1, nothing on stdout, one line on stderr that names `file` and holds
+/// `fault`, and no file in the output folder (an existing output stays as it was).
+void expectCleanFailure(const std::string& args, const std::string& file,
+                        const std::string& fault) {
+    test::TempDir dir;
+    const auto output = dir / "out.h5";
+    const ProcessResult r = preproc(args + " -o " + quote(output.string()));
+    EXPECT_EQ(r.status, 1) << args;
+    EXPECT_EQ(r.out, "") << args;
+    ASSERT_FALSE(r.err.empty()) << args;
+    EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << "one line only:\n" << r.err;
+    EXPECT_EQ(r.err.rfind("gsph-preproc: error: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(fault), std::string::npos) << r.err;
+    EXPECT_EQ(dir.entries(), 0) << "a failed run leaves no file behind: " << args;
+}
+
+TEST(PreprocCli, BadInputsFailCleanly) {
+    struct Case {
+        const char* file;
+        const char* fault;
+    };
+    const Case cases[] = {
+        {"missing.geo", "no such file"},
+        {"bad_syntax.geo", "syntax error"},
+        {"tetrahedra.geo", "4-node tetrahedra"},
+        {"mixed.msh", "1 6-node prisms besides 1 8-node hexahedra"},
+        {"unstructured_hex.geo", "not a structured hex block"},
+        {"inverted.msh", "inverted"},
+        {"folded.msh", "inverted"},
+        {"empty.msh", "no hexahedra"},
+        {"no_volume.geo", "no hexahedra"},
+        {"ungrouped_volume.geo", "no physical volume group"},
+        {"bad_transfinite.geo", "cannot mesh it"},
+    };
+    for (const Case& c : cases) {
+        const std::string path = source("tests/data/") + c.file;
+        expectCleanFailure(quote(path), path, c.fault);
+    }
+}
+
+TEST(PreprocCli, BadOptionsFailCleanly) {
+    const std::string bar = source("geometries/graded_bar.geo");
+    expectCleanFailure(quote(bar) + " --set refine=two", "refine=two", "NAME=VALUE");
+    expectCleanFailure(quote(bar) + " --set 2x=1", "2x=1", "NAME=VALUE");
+    const std::string msh = source("tests/data/inverted.msh");
+    expectCleanFailure(quote(msh) + " --set refine=2", msh, ".geo files only");
+    const std::string text = source("tests/data/README.md");
+    expectCleanFailure(quote(text), text, "expected a .geo or .msh file");
+}
+
+TEST(PreprocCli, UnwritableOutputFailsCleanly) {
+    test::TempDir dir;
+    const std::string bar = source("geometries/graded_bar.geo");
+    const auto output = dir / "no-such-folder" / "bar.h5";
+    const ProcessResult r = preproc(quote(bar) + " -o " + quote(output.string()));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("does not exist"), std::string::npos) << r.err;
+    EXPECT_EQ(dir.entries(), 0);
+}
+
+TEST(PreprocCli, FailureKeepsAnExistingOutput) {
+    test::TempDir dir;
+    const auto output = dir / "out.h5";
+    std::ofstream(output) << "keep me";
+    const ProcessResult r =
+        preproc(quote(source("tests/data/inverted.msh")) + " -o " + quote(output.string()));
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(slurp(output), "keep me");
+    EXPECT_EQ(dir.entries(), 1);
+}
+
+}  // namespace
+}  // namespace gsph
