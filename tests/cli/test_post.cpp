@@ -16,8 +16,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli/process.hpp"
 #include "io/snapshot.hpp"
+#include "support/process.hpp"
 #include "tools/temp_dir.hpp"
 #include "vtk_output.hpp"
 
@@ -35,19 +35,16 @@ class PostRun : public ::testing::Test {
     static void SetUpTestSuite() {
         dir_ = new TempDir;
         auto r = runCommand(std::string(GSPH_PREPROC_EXE) + " " +
-                                (kSource / "geometries/graded_bar.geo").string() + " -o " +
-                                (*dir_ / "particles.h5").string() + " > /dev/null",
-                            dir_->path().string());
-        ASSERT_EQ(r.exitCode, 0) << r.err;
+                            (kSource / "geometries/graded_bar.geo").string() + " -o " +
+                            (*dir_ / "particles.h5").string() + " > /dev/null");
+        ASSERT_EQ(r.status, 0) << r.err;
         r = runCommand(std::string(GSPH_SOLVE_EXE) + " " +
-                           (kSource / "cases/graded_bar/case.toml").string() + " --particles " +
-                           (*dir_ / "particles.h5").string() + " -o " + (*dir_ / "run").string() +
-                           " > /dev/null",
-                       dir_->path().string());
-        ASSERT_EQ(r.exitCode, 0) << r.err;
-        r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string(),
-                       dir_->path().string());
-        ASSERT_EQ(r.exitCode, 0) << r.err;
+                       (kSource / "cases/graded_bar/case.toml").string() + " --particles " +
+                       (*dir_ / "particles.h5").string() + " -o " + (*dir_ / "run").string() +
+                       " > /dev/null");
+        ASSERT_EQ(r.status, 0) << r.err;
+        r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string());
+        ASSERT_EQ(r.status, 0) << r.err;
     }
     static void TearDownTestSuite() { delete dir_; }
     static TempDir* dir_;
@@ -127,15 +124,13 @@ TEST_F(PostRun, PicturesAreReal) {
 
 TEST(PostCli, MissingRunFolderIsAClearError) {
     TempDir dir;
-    const auto r = runCommand(std::string(GSPH_POST_EXE) + " " + (dir / "nothing").string(),
-                              dir.path().string());
-    EXPECT_EQ(r.exitCode, 1);
+    const auto r = runCommand(std::string(GSPH_POST_EXE) + " " + (dir / "nothing").string());
+    EXPECT_EQ(r.status, 1);
     EXPECT_NE(r.err.find("gsph-post: error: "), std::string::npos) << r.err;
     EXPECT_NE(r.err.find("no such run folder"), std::string::npos) << r.err;
     fs::create_directories(dir / "empty");
-    const auto e = runCommand(std::string(GSPH_POST_EXE) + " " + (dir / "empty").string(),
-                              dir.path().string());
-    EXPECT_EQ(e.exitCode, 1);
+    const auto e = runCommand(std::string(GSPH_POST_EXE) + " " + (dir / "empty").string());
+    EXPECT_EQ(e.status, 1);
     EXPECT_NE(e.err.find("no snapshot_*.h5"), std::string::npos) << e.err;
 }
 

@@ -9,8 +9,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "cli/process.hpp"
 #include "io/snapshot.hpp"
+#include "support/process.hpp"
 #include "tools/temp_dir.hpp"
 
 namespace gsph {
@@ -27,9 +27,8 @@ const fs::path kSource = GSPH_SOURCE_DIR;
 // A particle file of the graded sample bar (320 particles, sets 'clamp' and 'load').
 void makeParticles(const TempDir& dir) {
     const auto r = runCommand(kPreproc + " " + (kSource / "geometries/graded_bar.geo").string() +
-                                  " -o " + (dir / "particles.h5").string() + " > /dev/null",
-                              dir.path().string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
+                              " -o " + (dir / "particles.h5").string() + " > /dev/null");
+    ASSERT_EQ(r.status, 0) << r.err;
 }
 
 struct BadCase {
@@ -65,9 +64,8 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         fs::copy_file(kSource / "tests/data/bad_cases" / c.file, casePath,
                       fs::copy_options::overwrite_existing);
         const auto r =
-            runCommand(kSolve + " " + casePath.string() + " -o " + (dir / "out").string(),
-                       dir.path().string());
-        EXPECT_EQ(r.exitCode, 1) << c.file;
+            runCommand(kSolve + " " + casePath.string() + " -o " + (dir / "out").string());
+        EXPECT_EQ(r.status, 1) << c.file;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.file << ": " << r.err;
         EXPECT_NE(r.err.find("gsph-solve: error: "), std::string::npos) << r.err;
         EXPECT_NE(r.err.find(c.file), std::string::npos) << c.file << ": " << r.err;
@@ -104,9 +102,8 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     const fs::path run = dir / "run";
     const auto r =
         runCommand(kSolve + " " + (kSource / "cases/graded_bar/case.toml").string() +
-                       " --particles " + (dir / "particles.h5").string() + " -o " + run.string(),
-                   dir.path().string());
-    ASSERT_EQ(r.exitCode, 0) << r.err;
+                   " --particles " + (dir / "particles.h5").string() + " -o " + run.string());
+    ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("done: t = 3.0000e-05 s"), std::string::npos) << r.out;
     for (int k = 0; k <= 10; ++k) {
         char name[32];

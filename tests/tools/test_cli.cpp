@@ -11,47 +11,24 @@
 #include "core/version.hpp"
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
+#include "support/process.hpp"
 #include "temp_dir.hpp"
 
 namespace gsph {
 namespace {
 
-struct ProcessResult {
-    int status = -1;
-    std::string out, err;
-};
-
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    std::stringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::ProcessResult;
+using test::quote;
+using test::runCommand;
+using test::slurp;
 
 std::string source(const std::string& relative) {
     return std::string(GSPH_SOURCE_DIR) + "/" + relative;
 }
 
-/// 'text' for the shell (built by appending: GCC 12 warns falsely on "'" + std::string&&).
-std::string quote(const std::string& text) {
-    std::string q(1, '\'');
-    q.append(text);
-    q.push_back('\'');
-    return q;
-}
-
-/// Runs gsph-preproc with `args`; stdout and stderr go to a scratch folder of their own.
+/// Runs gsph-preproc with `args`.
 ProcessResult preproc(const std::string& args) {
-    test::TempDir logs;
-    const std::string command = quote(GSPH_PREPROC) + " " + args + " > " +
-                                quote((logs / "out").string()) + " 2> " +
-                                quote((logs / "err").string());
-    const int raw = std::system(command.c_str());
-    ProcessResult r;
-    r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    r.out = slurp(logs / "out");
-    r.err = slurp(logs / "err");
-    return r;
+    return runCommand(quote(GSPH_PREPROC) + " " + args);
 }
 
 TEST(PreprocCli, ConvertsASampleWithSummaryAndProvenance) {
