@@ -25,6 +25,15 @@ inline void parallelFor(std::ptrdiff_t n, Body&& body) {
     for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
 }
 
+/// parallelFor over n blocks of consecutive items, `work` items in all (the particle blocks of
+/// neighbors/stencil_blocks.hpp): the threshold applies to the items, not to the blocks (4096
+/// blocks are some 1e5 particles, far beyond the point where two threads pay off).
+template <class Body>
+inline void parallelForBlocks(std::ptrdiff_t n, std::ptrdiff_t work, Body&& body) {
+#pragma omp parallel for schedule(static) if (work >= kParallelThreshold)
+    for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
+}
+
 /// Chunk size of deterministicSum; fixed so that the summation order never changes.
 inline constexpr std::ptrdiff_t kReductionChunk = 2048;
 

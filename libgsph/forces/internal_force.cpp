@@ -197,17 +197,20 @@ template <bool Viscous, bool Hourglass>
 void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
                const StressFactors& sf, const StencilBlocks& blocks, std::vector<Vec3>& force,
                ForceParts& parts) {
-    parallelFor(static_cast<std::ptrdiff_t>(blocks.blocks.size()), [&](std::ptrdiff_t k) {
-        const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
-        if (block.stencil != kNoStencil) {
-            stencilBlockForce<Viscous, Hourglass>(
-                in, sf, blocks.stencils[static_cast<std::size_t>(block.stencil)], block, force,
-                parts);
-            return;
-        }
-        for (Index c = block.begin; c < block.end; ++c)
-            csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, c, force, parts);
-    });
+    const Index work =
+        blocks.blocks.empty() ? 0 : blocks.blocks.back().end - blocks.blocks[0].begin;
+    parallelForBlocks(
+        static_cast<std::ptrdiff_t>(blocks.blocks.size()), work, [&](std::ptrdiff_t k) {
+            const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
+            if (block.stencil != kNoStencil) {
+                stencilBlockForce<Viscous, Hourglass>(
+                    in, sf, blocks.stencils[static_cast<std::size_t>(block.stencil)], block, force,
+                    parts);
+                return;
+            }
+            for (Index c = block.begin; c < block.end; ++c)
+                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, c, force, parts);
+        });
 }
 
 }  // namespace

@@ -167,10 +167,11 @@ void VelocityVerlet::updateKinematicsAndStress(State& state, double dt, bool atR
         const StencilBlocks& blocks = work_.blocks[b];
         std::visit(
             [&](const auto& model) {
-                parallelFor(
-                    static_cast<std::ptrdiff_t>(blocks.blocks.size()), [&](std::ptrdiff_t k) {
-                        updateBlock(model, s, blocks, blocks.blocks[static_cast<std::size_t>(k)]);
-                    });
+                parallelForBlocks(static_cast<std::ptrdiff_t>(blocks.blocks.size()),
+                                  bodies_[b].end - bodies_[b].begin, [&](std::ptrdiff_t k) {
+                                      updateBlock(model, s, blocks,
+                                                  blocks.blocks[static_cast<std::size_t>(k)]);
+                                  });
             },
             *bodies_[b].material);
     }
