@@ -4,8 +4,9 @@
 //   φ = h_ab (v_ab·x_ab)/(|x_ab|² + 0.01 h_ab²),  c̄, ρ̄ = pair means of sound speed and
 //   current density, v_ab = v_a − v_b, x_ab = x_a − x_b.
 // h_ab = ½(h_a + h_b), with each particle's physical smoothing length from its metric,
-// h_a = κΔθ (det ∂X/∂θ)^{1/d} (DESIGN §4; spaces/metric.hpp). The paper's Π_ab = J F^{-T} π_ab (its transpose convention fixed) enters the
-// total Lagrangian force like a pressure q_ab = ρ̄² π_ab: forces/internal_force.hpp.
+// h_a = κΔθ (det ∂X/∂θ)^{1/d} (DESIGN §4; spaces/metric.hpp). The paper's Π_ab = J F^{-T} π_ab (its
+// transpose convention fixed) enters the total Lagrangian force like a pressure q_ab = ρ̄² π_ab:
+// forces/internal_force.hpp.
 #pragma once
 
 #include "core/lanes.hpp"
