@@ -14,12 +14,32 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <vector>
 
 #include "case_config.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
 #include "run.hpp"
+
+namespace {
+
+// run.log, written atomically; a failure is reported, not thrown (true: written).
+bool writeLog(const std::filesystem::path& path, const std::vector<std::string>& lines) {
+    try {
+        gsph::writeAtomically(path, [&](const std::filesystem::path& temp) {
+            std::ofstream out(temp);
+            for (const std::string& line : lines) out << line << "\n";
+            if (!out.flush()) throw gsph::IoError(path.string() + ": write failed (disk full?)");
+        });
+        return true;
+    } catch (const gsph::Error& e) {
+        std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
+        return false;
+    }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"gsph-solve: total Lagrangian GSPH solver"};
@@ -58,21 +78,11 @@ int main(int argc, char** argv) {
     } catch (const gsph::Error& e) {
         std::fprintf(stderr, "%sgsph-solve: error: %s\n", options.progress ? "\n" : "", e.what());
         log.push_back(std::string("error: ") + e.what());
-        if (!options.runDir.empty() && std::filesystem::is_directory(options.runDir)) {
-            try {
-                gsph::writeAtomically(options.runDir / "run.log",
-                                      [&](const std::filesystem::path& temp) {
-                                          std::ofstream out(temp);
-                                          for (const std::string& line : log) out << line << "\n";
-                                      });
-            } catch (const gsph::Error&) {
-            }
-        }
+        // The run folder may not exist (the case file was refused): then there is no log.
+        if (!options.runDir.empty() && std::filesystem::is_directory(options.runDir))
+            writeLog(options.runDir / "run.log", log);
         return 1;
     }
-    gsph::writeAtomically(options.runDir / "run.log", [&](const std::filesystem::path& temp) {
-        std::ofstream out(temp);
-        for (const std::string& line : log) out << line << "\n";
-    });
+    if (!writeLog(options.runDir / "run.log", log)) return 1;
     return 0;
 }

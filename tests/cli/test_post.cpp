@@ -17,7 +17,7 @@
 #include <sstream>
 
 #include "io/snapshot.hpp"
-#include "support/process.hpp"
+#include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 #include "vtk_output.hpp"
 
@@ -28,20 +28,13 @@ namespace fs = std::filesystem;
 using test::runCommand;
 using test::TempDir;
 
-const fs::path kSource = GSPH_SOURCE_DIR;
-
 class PostRun : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
         dir_ = new TempDir;
-        auto r = runCommand(std::string(GSPH_PREPROC_EXE) + " " +
-                            (kSource / "geometries/graded_bar.geo").string() + " -o " +
-                            (*dir_ / "particles.h5").string() + " > /dev/null");
+        auto r = test::makeSampleParticles(*dir_ / "particles.h5");
         ASSERT_EQ(r.status, 0) << r.err;
-        r = runCommand(std::string(GSPH_SOLVE_EXE) + " " +
-                       (kSource / "cases/graded_bar/case.toml").string() + " --particles " +
-                       (*dir_ / "particles.h5").string() + " -o " + (*dir_ / "run").string() +
-                       " > /dev/null");
+        r = test::runSampleCase(*dir_ / "particles.h5", *dir_ / "run");
         ASSERT_EQ(r.status, 0) << r.err;
         r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string());
         ASSERT_EQ(r.status, 0) << r.err;

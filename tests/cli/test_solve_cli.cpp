@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "io/snapshot.hpp"
-#include "support/process.hpp"
+#include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 
 namespace gsph {
@@ -21,13 +21,10 @@ using test::runCommand;
 using test::TempDir;
 
 const std::string kSolve = GSPH_SOLVE_EXE;
-const std::string kPreproc = GSPH_PREPROC_EXE;
-const fs::path kSource = GSPH_SOURCE_DIR;
+const fs::path kSource = test::kSourceDir;
 
-// A particle file of the graded sample bar (320 particles, sets 'clamp' and 'load').
 void makeParticles(const TempDir& dir) {
-    const auto r = runCommand(kPreproc + " " + (kSource / "geometries/graded_bar.geo").string() +
-                              " -o " + (dir / "particles.h5").string() + " > /dev/null");
+    const auto r = test::makeSampleParticles(dir / "particles.h5");
     ASSERT_EQ(r.status, 0) << r.err;
 }
 
@@ -100,9 +97,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     TempDir dir;
     makeParticles(dir);
     const fs::path run = dir / "run";
-    const auto r =
-        runCommand(kSolve + " " + (kSource / "cases/graded_bar/case.toml").string() +
-                   " --particles " + (dir / "particles.h5").string() + " -o " + run.string());
+    const auto r = test::runSampleCase(dir / "particles.h5", run);
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("done: t = 3.0000e-05 s"), std::string::npos) << r.out;
     for (int k = 0; k <= 10; ++k) {
