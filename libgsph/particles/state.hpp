@@ -3,6 +3,7 @@
 // else (stress measures used by the force, sound speeds) is derived from it and the Reference.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/types.hpp"
@@ -31,6 +32,44 @@ struct State {
     std::vector<Mat3> cauchy;        ///< Cauchy stress σ [Pa]
     EnergyLedger ledger;
 
+    /// Calls visit(name, array) for every array of the state (per particle, or per pair for
+    /// bond data), in a fixed order. The one list of what the state holds: checkpoints and
+    /// restarts go through it, so a field added here is saved and restored without more code.
+    /// Array types: std::vector<Vec3>, std::vector<Mat3>, std::vector<double>,
+    /// std::vector<std::uint8_t>.
+    template <class Visitor>
+    void forEachArray(Visitor&& visit) {
+        visitArrays(*this, visit);
+    }
+    template <class Visitor>
+    void forEachArray(Visitor&& visit) const {
+        visitArrays(*this, visit);
+    }
+    /// Calls visit(name, value) for every scalar of the state (time, step, ledger), in order.
+    template <class Visitor>
+    void forEachScalar(Visitor&& visit) {
+        visit("time", time);
+        visit("dt", dt);
+        visit("step", step);
+        visit("ledger/viscous_work", ledger.viscousWork);
+        visit("ledger/hourglass_work", ledger.hourglassWork);
+        visit("ledger/boundary_work", ledger.boundaryWork);
+        visit("ledger/viscous_power", ledger.viscousPower);
+        visit("ledger/hourglass_power", ledger.hourglassPower);
+        visit("ledger/boundary_power", ledger.boundaryPower);
+    }
+
+  private:
+    template <class Self, class Visitor>
+    static void visitArrays(Self& s, Visitor& visit) {
+        visit("x", s.x);
+        visit("v", s.v);
+        visit("acceleration", s.acceleration);
+        visit("F", s.F);
+        visit("cauchy", s.cauchy);
+    }
+
+  public:
     /// State at rest in the reference configuration.
     static State atRest(const std::vector<Vec3>& X) {
         State s;
