@@ -24,7 +24,7 @@ Simulation::Simulation(Reference ref, std::vector<Material> materialsByBody, Sol
         bodies_.push_back({a, end, &materials_[static_cast<std::size_t>(id)]});
         a = end;
     }
-    state_ = State::atRest(ref_.X);
+    state_ = State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs()));
 }
 
 void Simulation::constrain(VelocityConstraint constraint) {

@@ -53,7 +53,27 @@ std::vector<Vec3> readVectors(const h5::File& f, const std::string& path, std::s
     return out;
 }
 
+// An N-vector of float64, its length checked.
+std::vector<double> readScalars(const h5::File& f, const std::string& path, std::size_t n) {
+    std::vector<std::size_t> dims;
+    std::vector<double> d = f.read<double>(path, dims);
+    if (d.size() != n) throw IoError(f.name() + ": " + path + " has the wrong length");
+    return d;
+}
+
 }  // namespace
+
+std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
+                                              const std::vector<std::uint8_t>& bondIntact) {
+    std::vector<std::array<Index, 2>> out;
+    if (bondIntact.empty()) return out;
+    for (Index a = 0; a < pairs.particles(); ++a)
+        for (Index k = pairs.begin(a); k < pairs.end(a); ++k) {
+            const Index b = pairs.neighbor[static_cast<std::size_t>(k)];
+            if (a < b && bondIntact[static_cast<std::size_t>(k)] == 0) out.push_back({a, b});
+        }
+    return out;
+}
 
 void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,
                    const Provenance& provenance) {
@@ -78,6 +98,12 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         f.write("/particles/volume", ref.quadVolume.data(), {n});
         f.write("/particles/body", ref.body.data(), {n});
         f.write("/particles/space", ref.space.data(), {n});
+        f.write("/particles/plastic_strain", state.plasticStrain.data(), {n});
+        f.write("/particles/temperature", state.temperature.data(), {n});
+        f.write("/particles/damage", state.damage.data(), {n});
+        const std::vector<std::array<Index, 2>> broken = brokenBonds(ref.pairs, state.bondIntact);
+        f.write("/bonds/broken", broken.empty() ? nullptr : broken.data()->data(),
+                {broken.size(), 2});
     });
 }
 
@@ -106,6 +132,20 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     s.volume = f.read<double>("/particles/volume", dims);
     if (s.volume.size() != n)
         throw IoError(path.string() + ": /particles/volume has the wrong length");
+    s.plasticStrain = readScalars(f, "/particles/plastic_strain", n);
+    s.temperature = readScalars(f, "/particles/temperature", n);
+    s.damage = readScalars(f, "/particles/damage", n);
+    const std::vector<Index> broken = f.read<std::int32_t>("/bonds/broken", dims);
+    if (dims.size() != 2 || dims[1] != 2)
+        throw IoError(path.string() + ": /bonds/broken is not an M×2 array");
+    s.brokenBonds.resize(broken.size() / 2);
+    for (std::size_t k = 0; k < s.brokenBonds.size(); ++k) {
+        s.brokenBonds[k] = {broken[2 * k], broken[2 * k + 1]};
+        for (Index a : s.brokenBonds[k])
+            if (a < 0 || static_cast<std::size_t>(a) >= n)
+                throw IoError(path.string() + ": /bonds/broken names particle " +
+                              std::to_string(a) + " outside [0, " + std::to_string(n) + ")");
+    }
     return s;
 }
 

@@ -9,8 +9,11 @@
 //   /particles/F                 N×9 deformation gradient, row-major
 //   /particles/volume            N reference quadrature volume ω det M [m³]
 //   /particles/body, space       N int32
+//   /particles/plastic_strain, temperature, damage   N float64
+//   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <vector>
 
@@ -22,7 +25,7 @@ namespace gsph {
 
 inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
-inline constexpr int kSnapshotFormatMinor = 1;
+inline constexpr int kSnapshotFormatMinor = 2;
 
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
@@ -32,9 +35,15 @@ struct Snapshot {
     std::vector<Mat3> stress, F;
     std::vector<double> volume;
     std::vector<Index> body, space;
+    std::vector<double> plasticStrain, temperature, damage;
+    std::vector<std::array<Index, 2>> brokenBonds;  ///< (a, b), a < b
     Provenance provenance;
     Index size() const { return static_cast<Index>(x.size()); }
 };
+
+/// The broken bonds of a state as particle pairs (a, b) with a < b, in CSR order.
+std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
+                                              const std::vector<std::uint8_t>& bondIntact);
 
 /// Writes the state of a run. Throws IoError naming the file on failure (nothing left behind).
 void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,

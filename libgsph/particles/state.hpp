@@ -25,11 +25,17 @@ struct State {
     double time = 0.0;
     double dt = 0.0;  ///< the step the integrator takes next
     long step = 0;
-    std::vector<Vec3> x;             ///< current position [m]
-    std::vector<Vec3> v;             ///< velocity [m/s]
-    std::vector<Vec3> acceleration;  ///< [m/s²], consistent with x and cauchy
-    std::vector<Mat3> F;             ///< deformation gradient
-    std::vector<Mat3> cauchy;        ///< Cauchy stress σ [Pa]
+    std::vector<Vec3> x;                ///< current position [m]
+    std::vector<Vec3> v;                ///< velocity [m/s]
+    std::vector<Vec3> acceleration;     ///< [m/s²], consistent with x and cauchy
+    std::vector<Mat3> F;                ///< deformation gradient
+    std::vector<Mat3> cauchy;           ///< Cauchy stress σ [Pa]
+    std::vector<double> plasticStrain;  ///< effective plastic strain ε̄p (DESIGN §5)
+    std::vector<double> temperature;    ///< [K]
+    std::vector<double> damage;         ///< Johnson–Cook damage D ∈ [0, 1]
+    /// Per pair of Reference::pairs (CSR order): 1 while the bond holds, 0 once broken for good
+    /// (DESIGN §5). Both directions (a,b) and (b,a) carry the same value.
+    std::vector<std::uint8_t> bondIntact;
     EnergyLedger ledger;
 
     /// Calls visit(name, array) for every array of the state (per particle, or per pair for
@@ -67,11 +73,18 @@ struct State {
         visit("acceleration", s.acceleration);
         visit("F", s.F);
         visit("cauchy", s.cauchy);
+        visit("plastic_strain", s.plasticStrain);
+        visit("temperature", s.temperature);
+        visit("damage", s.damage);
+        visit("bond_intact", s.bondIntact);
     }
 
   public:
-    /// State at rest in the reference configuration.
-    static State atRest(const std::vector<Vec3>& X) {
+    /// Room temperature of a state at rest unless the material sets another [K].
+    static constexpr double kRoomTemperature = 293.15;
+
+    /// State at rest in the reference configuration, every bond of `pairCount` intact.
+    static State atRest(const std::vector<Vec3>& X, std::size_t pairCount = 0) {
         State s;
         const std::size_t n = X.size();
         s.x = X;
@@ -79,6 +92,10 @@ struct State {
         s.acceleration.assign(n, Vec3::Zero());
         s.F.assign(n, Mat3::Identity());
         s.cauchy.assign(n, Mat3::Zero());
+        s.plasticStrain.assign(n, 0.0);
+        s.temperature.assign(n, kRoomTemperature);
+        s.damage.assign(n, 0.0);
+        s.bondIntact.assign(pairCount, 1);
         return s;
     }
 };

@@ -66,7 +66,7 @@ TEST(HourglassControl, AffineMotionHasNoHourglassError) {
         computeGeometry(r);
         return r;
     }();
-    State s = State::atRest(ref.X);
+    State s = State::atRest(ref.X, static_cast<std::size_t>(ref.pairs.pairs()));
     const Mat3 A = (Mat3() << 1.1, 0.2, 0.0, -0.1, 0.9, 0.05, 0.0, 0.1, 1.2).finished();
     for (std::size_t a = 0; a < s.x.size(); ++a) {
         s.x[a] = A * ref.X[a];
