@@ -163,8 +163,8 @@ void stencilBlockForce(const ForceView& in, const StressFactors& sf, const Stenc
 // The general path: particle c over its CSR list, the same pair formulas one pair at a time.
 template <bool Viscous, bool Hourglass>
 void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleFields& pf,
-                      const StressFactors& sf, Index c, std::vector<Vec3>& force,
-                      ForceParts& parts) {
+                      const StressFactors& sf, const BondView& bonds, Index c,
+                      std::vector<Vec3>& force, ForceParts& parts) {
     const PairList& P = ref.pairs;
     const auto ic = static_cast<std::size_t>(c);
     Vec3 sumW = Vec3::Zero(), fK = Vec3::Zero(), sumQW = Vec3::Zero(), fN = Vec3::Zero();
@@ -172,6 +172,7 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
     const Vec3 xc = pf.x[ic], vc = pf.v[ic], Xc = pf.X[ic];
     const Mat3 Fc = pf.F[ic];
     for (Index k = P.begin(c); k < P.end(c); ++k) {
+        if (!bonds.holds(k)) continue;
         const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
         const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];
         sumW += e.gradW;
@@ -195,21 +196,21 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
 
 template <bool Viscous, bool Hourglass>
 void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
-               const StressFactors& sf, const StencilBlocks& blocks, std::vector<Vec3>& force,
-               ForceParts& parts) {
+               const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
+               std::vector<Vec3>& force, ForceParts& parts) {
     const Index work =
         blocks.blocks.empty() ? 0 : blocks.blocks.back().end - blocks.blocks[0].begin;
     parallelForBlocks(
         static_cast<std::ptrdiff_t>(blocks.blocks.size()), work, [&](std::ptrdiff_t k) {
             const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
-            if (block.stencil != kNoStencil) {
+            if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
                 stencilBlockForce<Viscous, Hourglass>(
                     in, sf, blocks.stencils[static_cast<std::size_t>(block.stencil)], block, force,
                     parts);
                 return;
             }
             for (Index c = block.begin; c < block.end; ++c)
-                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, c, force, parts);
+                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, c, force, parts);
         });
 }
 
@@ -217,7 +218,7 @@ void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& 
 
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
-                   std::vector<Vec3>& force, ForceParts& parts) {
+                   std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds) {
     const ForceView in{components(factors.K),
                        components(factors.N),
                        components(fields.F),
@@ -234,13 +235,13 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
     const bool viscous = options.viscosity.enabled();
     const bool hourglass = options.hourglass != 0.0;
     if (viscous && hourglass)
-        forceLoop<true, true>(in, ref, fields, factors, blocks, force, parts);
+        forceLoop<true, true>(in, ref, fields, factors, blocks, bonds, force, parts);
     else if (viscous)
-        forceLoop<true, false>(in, ref, fields, factors, blocks, force, parts);
+        forceLoop<true, false>(in, ref, fields, factors, blocks, bonds, force, parts);
     else if (hourglass)
-        forceLoop<false, true>(in, ref, fields, factors, blocks, force, parts);
+        forceLoop<false, true>(in, ref, fields, factors, blocks, bonds, force, parts);
     else
-        forceLoop<false, false>(in, ref, fields, factors, blocks, force, parts);
+        forceLoop<false, false>(in, ref, fields, factors, blocks, bonds, force, parts);
 }
 
 }  // namespace gsph

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/soa_field.hpp"
+#include "failure/brittle_bonds.hpp"
 #include "forces/artificial_viscosity.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
@@ -65,8 +66,10 @@ struct ForceParts {
 
 /// f_c for the particles of one body, partitioned into `blocks` (built from ref.pairs).
 /// Writes force[c]; parts.* only when that term is on (sized by the caller: ref.size()).
+/// Broken bonds (`bonds`) leave every pair term; a block with a damaged particle takes the
+/// CSR path.
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
-                   std::vector<Vec3>& force, ForceParts& parts);
+                   std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds = {});
 
 }  // namespace gsph

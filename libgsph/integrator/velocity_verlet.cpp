@@ -45,6 +45,8 @@ struct KinematicsStep {
     double dt;
     bool atRest;  // only derive the factors from the current F and σ (initialisation)
     Mat3 outOfPlane;
+    const BrittleBonds& bonds;
+    const Mat3* G;  // per particle: the reference's, or recomputed over surviving bonds
 };
 
 // The factors the force loop reads, from F and σ at t_{n+1}:
@@ -61,7 +63,7 @@ void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const M
         return;
     }
     point.density = model.elastic().density / J;
-    const Mat3 N = s.ref.quadVolume[ia] * C * s.ref.G[ia];
+    const Mat3 N = s.ref.quadVolume[ia] * C * s.G[ia];
     w.factors.N.set(ia, N);
     w.factors.K.set(ia, point.cauchy * N);
     w.factors.density[ia] = point.density;
@@ -78,7 +80,7 @@ template <class Model>
 void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3& gradX,
                      const Mat3& gradV) {
     const auto ia = static_cast<std::size_t>(a);
-    const Mat3& G = s.ref.G[ia];
+    const Mat3& G = s.G[ia];
     const Mat3 F = gradX * G.transpose() + s.outOfPlane;
     const Mat3 Fdot = gradV * G.transpose();
     const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
@@ -91,17 +93,39 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     storeFactors(model, s, ia, F, point);
 }
 
+// A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
+// still needs a sound speed and a length for the time step.
+template <class Model>
+void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
+    s.state.cauchy[ia].setZero();
+    MaterialPoint point;
+    point.density = model.elastic().density / s.state.F[ia].determinant();
+    StepWorkspace& w = s.work;
+    w.factors.N.set(ia, Mat3::Zero());
+    w.factors.K.set(ia, Mat3::Zero());
+    w.factors.density[ia] = point.density;
+    w.factors.soundSpeed[ia] = model.waveSpeed(point);
+    w.fields.F.set(ia, s.state.F[ia]);
+    w.lengthScale[ia] = s.ref.spacing[ia];
+    w.failure[ia] = 0;
+}
+
 template <class Model>
 void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blocks,
                  const ParticleBlock& block) {
+    const BondView bonds = s.bonds.view(s.state);
     if (s.atRest) {
         for (Index a = block.begin; a < block.end; ++a) {
             const auto ia = static_cast<std::size_t>(a);
+            if (s.bonds.detached(a)) {
+                detachParticle(model, s, ia);
+                continue;
+            }
             MaterialPoint point;
             point.cauchy = s.state.cauchy[ia];
             storeFactors(model, s, ia, s.state.F[ia], point);
         }
-    } else if (block.stencil != kNoStencil) {
+    } else if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
         BlockThetaGradients g;
         stencilThetaGradients(blocks.stencils[static_cast<std::size_t>(block.stencil)], block.begin,
                               block.end - block.begin, s.work.fields.x, s.work.fields.v, g);
@@ -109,11 +133,26 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
             advanceParticle(model, s, block.begin + i, g.gradX(i), g.gradV(i));
     } else {
         for (Index a = block.begin; a < block.end; ++a) {
+            if (s.bonds.detached(a)) {
+                detachParticle(model, s, static_cast<std::size_t>(a));
+                continue;
+            }
             Mat3 gradX, gradV;
-            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV);
+            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV,
+                           bonds.intact);
             advanceParticle(model, s, a, gradX, gradV);
         }
     }
+}
+
+// εmax of each particle from the per-body list (bodies without an entry never break).
+std::vector<double> stretchByParticle(const Reference& ref, const std::vector<double>& byBody) {
+    std::vector<double> out(static_cast<std::size_t>(ref.size()), 0.0);
+    for (std::size_t a = 0; a < out.size(); ++a) {
+        const auto body = static_cast<std::size_t>(ref.body[a]);
+        if (body < byBody.size()) out[a] = byBody[body];
+    }
+    return out;
 }
 
 }  // namespace
@@ -131,7 +170,8 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     : ref_(ref),
       bodies_(std::move(bodies)),
       constraints_(std::move(constraints)),
-      options_(options) {
+      options_(options),
+      bonds_(ref, stretchByParticle(ref, options_.bondStretch)) {
     if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
         throw InputError("CFL number must lie in (0, 1], got " + std::to_string(options_.cfl));
     if (options_.hourglass < 0.0) throw InputError("hourglass coefficient must be ≥ 0");
@@ -162,7 +202,8 @@ void VelocityVerlet::packKinematics(const State& state, Index a) {
 // vectorise the θ-gradient sums): F and Ḟ, the material update, and the factors K, N the
 // force loop reads. Reads the SoA x, v packed by the drift.
 void VelocityVerlet::updateKinematicsAndStress(State& state, double dt, bool atRest) {
-    KinematicsStep s{ref_, state, work_, dt, atRest, ref_.dim.outOfPlane()};
+    KinematicsStep s{
+        ref_, state, work_, dt, atRest, ref_.dim.outOfPlane(), bonds_, bonds_.G().data()};
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const StencilBlocks& blocks = work_.blocks[b];
         std::visit(
@@ -199,7 +240,7 @@ void VelocityVerlet::computeAccelerations(State& state) {
         fo.hourglass = options_.hourglass;
         fo.youngsModulus = elasticConstants(*body.material).youngsModulus;
         internalForce(ref_, work_.fields, work_.factors, work_.blocks[b], fo, work_.force,
-                      work_.parts);
+                      work_.parts, bonds_.view(state));
     }
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
@@ -258,6 +299,7 @@ double VelocityVerlet::stableTimeStep(const State& state) const {
 }
 
 void VelocityVerlet::initialize(State& state) {
+    bonds_.attach(state);
     applyConstraints(state, state.time);
     parallelFor(ref_.size(), [&](Index a) { packKinematics(state, a); });
     updateKinematicsAndStress(state, 0.0, true);
@@ -284,6 +326,7 @@ void VelocityVerlet::step(State& state) {
         state.x[ia] += dt * state.v[ia];
         packKinematics(state, a);
     });
+    bonds_.breakStretchedBonds(state);
     // 3–5: kinematics, stress, forces at t_{n+1} (viscosity sees v_{n+½}).
     state.time += dt;
     const double t1 = omp_get_wtime();

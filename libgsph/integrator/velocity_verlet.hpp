@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Velocity-Verlet step exactly as Algorithm 1 of the paper (DESIGN §4):
 //   1. v_{n+½} = v_n + ½Δt a_n                         (then constraints at t_n + ½Δt)
-//   2. x_{n+1} = x_n + Δt v_{n+½}
+//   2. x_{n+1} = x_n + Δt v_{n+½}; bonds stretched to εmax break (failure/brittle_bonds.hpp)
 //   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
 //   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}
 //   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "boundary/constraints.hpp"
+#include "failure/brittle_bonds.hpp"
 #include "forces/internal_force.hpp"
 #include "materials/material.hpp"
 #include "particles/reference.hpp"
@@ -27,6 +28,9 @@ struct SolverOptions {
     ViscosityCoefficients viscosity;  ///< β1, β2 (paper: Monaghan)
     double hourglass = 0.0;           ///< α of forces/hourglass.hpp (0 = off)
     double fixedTimeStep = 0.0;       ///< > 0: use this Δt instead of the CFL estimate
+    /// εmax of brittle bonds per body id (failure/brittle_bonds.hpp); a body without an entry,
+    /// or with 0, never breaks.
+    std::vector<double> bondStretch;
 };
 
 /// Contiguous range of one body and its material.
@@ -67,6 +71,7 @@ class VelocityVerlet {
     const StepWorkspace& workspace() const { return work_; }
     const SolverOptions& options() const { return options_; }
     const PhaseTimes& phaseTimes() const { return times_; }
+    const BrittleBonds& bonds() const { return bonds_; }
 
   private:
     void updateKinematicsAndStress(State& state, double dt, bool atRest);
@@ -82,6 +87,7 @@ class VelocityVerlet {
     std::vector<BodyRange> bodies_;
     std::vector<VelocityConstraint> constraints_;
     SolverOptions options_;
+    BrittleBonds bonds_;
     StepWorkspace work_;
     PhaseTimes times_;
 };

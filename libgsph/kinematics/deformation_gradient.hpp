@@ -12,6 +12,7 @@
 // pairs instead (neighbors/stencil_blocks.hpp), equal up to round-off.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/soa_field.hpp"
@@ -22,8 +23,9 @@ namespace gsph {
 
 /// Accumulates the θ-gradients Σ_b ω (x_b − x_a) ⊗ ∇W_ab and the same of v at particle a (the
 /// inner pair loop of the step), as Σ_b x_b ⊗ w_ab − x_a ⊗ Σ_b w_ab with w_ab = ω ∇W_ab.
+/// With `intact` (per CSR pair, failure/brittle_bonds.hpp) only over the bonds that hold.
 inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const Vec3* v, Mat3& gradX,
-                           Mat3& gradV) {
+                           Mat3& gradV, const std::uint8_t* intact = nullptr) {
     const PairList& P = ref.pairs;
     const auto ia = static_cast<std::size_t>(a);
     Mat3 sx = Mat3::Zero();
@@ -33,6 +35,7 @@ inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const V
     const Index* id = P.kernelId.data();
     const KernelEntry* table = P.table.data();
     for (Index k = P.begin(a); k < P.end(a); ++k) {
+        if (intact != nullptr && intact[k] == 0) continue;
         const auto b = static_cast<std::size_t>(nb[k]);
         const Vec3& w = table[id[k]].gradW;
         sw += w;

@@ -18,6 +18,36 @@ constexpr double kSingularCorrection = 1e-8;
 
 }  // namespace
 
+ParticleMetric particleMetric(const Reference& ref, Index a, const std::uint8_t* intact) {
+    const PairList& P = ref.pairs;
+    const auto ia = static_cast<std::size_t>(a);
+    const Mat3 outOfPlane = ref.dim.outOfPlane();
+    ParticleMetric pm;
+    Mat3 MX = Mat3::Zero();  // Σ ω (X_b − X_a) ⊗ ∇W, before the correction
+    for (Index k = P.begin(a); k < P.end(a); ++k) {
+        if (intact != nullptr && intact[k] == 0) continue;
+        const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+        // θ_b − θ_a = −r from the table: it carries the periodic minimum image.
+        const KernelEntry& e =
+            P.table[static_cast<std::size_t>(P.kernelId[static_cast<std::size_t>(k)])];
+        pm.B.noalias() -= e.thetaOffset * e.gradW.transpose();
+        MX.noalias() += (ref.X[b] - ref.X[ia]) * e.gradW.transpose();
+    }
+    pm.B += outOfPlane;
+    if (!(std::abs(pm.B.determinant()) > kSingularCorrection)) {
+        pm.status = ParticleMetric::Status::SingularCorrection;
+        return pm;
+    }
+    const Mat3 Binv = pm.B.inverse();
+    pm.M = MX * Binv + outOfPlane;
+    if (!(pm.M.determinant() > 0.0)) {
+        pm.status = ParticleMetric::Status::InvertedMetric;
+        return pm;
+    }
+    pm.G = pm.M.inverse().transpose() * Binv.transpose();
+    return pm;
+}
+
 void computeGeometry(Reference& ref) {
     const Index n = ref.size();
     if (ref.pairs.particles() != n)
@@ -33,38 +63,18 @@ void computeGeometry(Reference& ref) {
     ref.spacing.resize(N);
     ref.smoothingLength.resize(N);
     ref.metricCondition.resize(N);
-    const Mat3 outOfPlane = ref.dim.outOfPlane();
-    const PairList& P = ref.pairs;
-
     // Failures are collected per particle and reported after the loop (no throw inside OpenMP).
     std::vector<std::uint8_t> failed(N, 0);
     parallelFor(n, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
-        Mat3 B = Mat3::Zero();
-        Mat3 MX = Mat3::Zero();  // Σ ω (X_b − X_a) ⊗ ∇W, before the correction
-        for (Index k = P.begin(a); k < P.end(a); ++k) {
-            const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
-            // θ_b − θ_a = −r from the table: it carries the periodic minimum image.
-            const KernelEntry& e =
-                P.table[static_cast<std::size_t>(P.kernelId[static_cast<std::size_t>(k)])];
-            B.noalias() -= e.thetaOffset * e.gradW.transpose();
-            MX.noalias() += (ref.X[b] - ref.X[ia]) * e.gradW.transpose();
-        }
-        B += outOfPlane;
-        const double detB = B.determinant();
-        if (!(std::abs(detB) > kSingularCorrection)) {
-            failed[ia] = 1;
+        const ParticleMetric pm = particleMetric(ref, a);
+        if (pm.status != ParticleMetric::Status::Ok) {
+            failed[ia] = pm.status == ParticleMetric::Status::SingularCorrection ? 1 : 2;
             return;
         }
-        const Mat3 Binv = B.inverse();
-        const Mat3 M = MX * Binv + outOfPlane;
+        const Mat3& M = pm.M;
         const double detM = M.determinant();
-        if (!(detM > 0.0)) {
-            failed[ia] = 2;
-            return;
-        }
-        const Mat3 Q = M.inverse();
-        ref.G[ia] = Q.transpose() * Binv.transpose();
+        ref.G[ia] = pm.G;
         ref.quadVolume[ia] = ref.omega[ia] * detM;
         ref.mass[ia] = ref.density[ia] * ref.quadVolume[ia];
         const int d = ref.dim.value;

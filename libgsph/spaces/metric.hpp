@@ -13,9 +13,24 @@
 // paper's h_a of the artificial viscosity) and the condition number of M.
 #pragma once
 
+#include <cstdint>
+
 #include "particles/reference.hpp"
 
 namespace gsph {
+
+/// The first-order corrected metric of one particle (DESIGN §3).
+struct ParticleMetric {
+    Mat3 B = Mat3::Zero();  ///< Σ ω (θ_b − θ_a) ⊗ ∇W_ab (+ e_z⊗e_z in 2-D)
+    Mat3 M = Mat3::Zero();  ///< ∂X/∂θ
+    Mat3 G = Mat3::Zero();  ///< Q^T B^{-T}
+    enum class Status { Ok, SingularCorrection, InvertedMetric } status = Status::Ok;
+};
+
+/// B, M and G of particle a over its pairs; with `intact` (per CSR pair, DESIGN §5) only over
+/// the pairs whose bond holds, so that F = I stays exact at rest after bonds break.
+/// Requires ref.pairs; G is set only when status is Ok.
+ParticleMetric particleMetric(const Reference& ref, Index a, const std::uint8_t* intact = nullptr);
 
 /// Requires ref.pairs (buildPairs). Throws NumericalError naming the particle if B or M is
 /// singular or M inverts the orientation (det M ≤ 0).

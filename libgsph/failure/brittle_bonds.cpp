@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+#include "failure/brittle_bonds.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "spaces/metric.hpp"
+
+namespace gsph {
+
+BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle)
+    : ref_(ref), stretch_(std::move(stretchByParticle)) {
+    if (stretch_.size() != static_cast<std::size_t>(ref.size()))
+        throw InputError("bond stretch limits: " + std::to_string(stretch_.size()) +
+                         " values for " + std::to_string(ref.size()) + " particles");
+    for (double e : stretch_) {
+        if (!(e >= 0.0) || !std::isfinite(e))
+            throw InputError("bond stretch limit εmax must be finite and ≥ 0, got " +
+                             std::to_string(e));
+        if (e > 0.0) enabled_ = true;
+    }
+    if (!enabled_) return;
+    const auto n = static_cast<std::size_t>(ref.size());
+    G_ = ref.G;
+    damaged_.assign(n, 0);
+    detached_.assign(n, 0);
+    changed_.assign(n, 0);
+    intactDetB_.resize(n);
+    parallelFor(ref.size(), [&](Index a) {
+        intactDetB_[static_cast<std::size_t>(a)] =
+            std::abs(particleMetric(ref_, a).B.determinant());
+    });
+}
+
+void BrittleBonds::refreshParticle(const State& state, Index a) {
+    const auto ia = static_cast<std::size_t>(a);
+    const std::uint8_t* intact = state.bondIntact.data();
+    std::uint8_t damaged = 0;
+    for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a); ++k)
+        if (intact[k] == 0) damaged = 1;
+    damaged_[ia] = damaged;
+    if (damaged == 0) {
+        G_[ia] = ref_.G[ia];
+        detached_[ia] = 0;
+        return;
+    }
+    const ParticleMetric pm = particleMetric(ref_, a, intact);
+    const bool spans = pm.status == ParticleMetric::Status::Ok &&
+                       std::abs(pm.B.determinant()) >= kDetachedCorrection * intactDetB_[ia];
+    detached_[ia] = spans ? 0 : 1;
+    G_[ia] = spans ? pm.G : Mat3::Zero();
+}
+
+void BrittleBonds::attach(const State& state) {
+    if (!enabled_) return;
+    if (state.bondIntact.size() != static_cast<std::size_t>(ref_.pairs.pairs()))
+        throw InputError("state has " + std::to_string(state.bondIntact.size()) +
+                         " bond flags for " + std::to_string(ref_.pairs.pairs()) + " pairs");
+    parallelFor(ref_.size(), [&](Index a) { refreshParticle(state, a); });
+    brokenPairs_ = 0;
+    for (Index a = 0; a < ref_.size(); ++a)
+        for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a); ++k)
+            if (state.bondIntact[static_cast<std::size_t>(k)] == 0 &&
+                ref_.pairs.neighbor[static_cast<std::size_t>(k)] > a)
+                ++brokenPairs_;
+}
+
+Index BrittleBonds::breakStretchedBonds(State& state) {
+    if (!enabled_) return 0;
+    const PairList& P = ref_.pairs;
+    std::uint8_t* intact = state.bondIntact.data();
+    // Each particle writes only its own CSR entries; (a, b) and (b, a) compare the same
+    // squared lengths, so both sides decide alike.
+    parallelFor(ref_.size(), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        const double limit = stretch_[ia];
+        changed_[ia] = 0;
+        if (limit == 0.0) return;
+        const double factor = (1.0 + limit) * (1.0 + limit);
+        for (Index k = P.begin(a); k < P.end(a); ++k) {
+            if (intact[k] == 0) continue;
+            const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+            const double current = (state.x[b] - state.x[ia]).squaredNorm();
+            const double initial = (ref_.X[b] - ref_.X[ia]).squaredNorm();
+            if (current >= factor * initial) {
+                intact[k] = 0;
+                ++changed_[ia];
+            }
+        }
+    });
+    // Both sides of a pair break in the same call: each fresh pair is counted twice.
+    Index freshEntries = 0;
+    for (Index c : changed_) freshEntries += c;
+    if (freshEntries == 0) return 0;
+    const Index fresh = freshEntries / 2;
+    brokenPairs_ += fresh;
+    parallelFor(ref_.size(), [&](Index a) {
+        if (changed_[static_cast<std::size_t>(a)] != 0) refreshParticle(state, a);
+    });
+    return fresh;
+}
+
+BondView BrittleBonds::view(const State& state) const {
+    if (!enabled_) return {};
+    return {state.bondIntact.data(), damaged_.data()};
+}
+
+}  // namespace gsph
