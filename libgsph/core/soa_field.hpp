@@ -26,6 +26,7 @@ class SoaField {
         data_.assign(n * kComponents, 0.0);
     }
     std::size_t size() const { return n_; }
+    bool empty() const { return n_ == 0; }
 
     /// Component (r, c) of all particles, index r·Cols + c (row-major).
     double* component(int rc) { return data_.data() + static_cast<std::size_t>(rc) * n_; }

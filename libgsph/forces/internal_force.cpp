@@ -17,6 +17,8 @@ static_assert(kMinStencilRun >= kLanes, "a stencil block holds at least one stri
 // directly so that the compiler sees plain contiguous streams.
 struct ForceView {
     std::array<const double*, 9> K, N, F;
+    const Mat3* G;             // per particle (bonds may have changed it)
+    const std::uint8_t* band;  // overset band flags, or null
     std::array<const double*, 3> x, v, X;
     const double *h, *c, *rho, *V;
     const KernelEntry* table;
@@ -118,14 +120,13 @@ void hourglassStrip(const ForceView& in, const Stencil& st, Index a, Index i, Bl
     for (int r = 0; r < 3; ++r) storeLanes(s.fh[r] + i, fh[r]);
 }
 
-// The force of particle c from its pair sums: f_c = K_c Σw + Σ K_b w − (N_c Σqw + Σ q N_b w)
-// + f_hourglass (DESIGN §4).
+// The force of particle c from its pair sums: f_c = fStress − (N_c Σqw + Σ q N_b w)
+// + f_hourglass, fStress = K_c Σw + Σ K_b w (DESIGN §4) or the band's difference form.
 template <bool Viscous, bool Hourglass>
-void finishParticle(const StressFactors& sf, Index c, const Vec3& sumW, const Vec3& fK,
-                    const Vec3& sumQW, const Vec3& fN, const Vec3& fh, std::vector<Vec3>& force,
-                    ForceParts& parts) {
+void finishParticle(const StressFactors& sf, Index c, const Vec3& fStress, const Vec3& sumQW,
+                    const Vec3& fN, const Vec3& fh, std::vector<Vec3>& force, ForceParts& parts) {
     const auto ic = static_cast<std::size_t>(c);
-    Vec3 f = sf.K[ic] * sumW + fK;
+    Vec3 f = fStress;
     if constexpr (Viscous) {
         const Vec3 fv = -(sf.N[ic] * sumQW + fN);
         parts.viscous[ic] = fv;
@@ -155,8 +156,10 @@ void stencilBlockForce(const ForceView& in, const StressFactors& sf, const Stenc
         const auto col = [&](const double(&a)[3][kMaxBlock]) {
             return Vec3(a[0][i], a[1][i], a[2][i]);
         };
-        finishParticle<Viscous, Hourglass>(sf, block.begin + i, st.sumGradW, col(s.fK),
-                                           col(s.sumQW), col(s.fN), col(s.fh), force, parts);
+        const Index c = block.begin + i;
+        finishParticle<Viscous, Hourglass>(
+            sf, c, sf.K[static_cast<std::size_t>(c)] * st.sumGradW + col(s.fK), col(s.sumQW),
+            col(s.fN), col(s.fh), force, parts);
     }
 }
 
@@ -171,12 +174,17 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
     Vec3 fh = Vec3::Zero();
     const Vec3 xc = pf.x[ic], vc = pf.v[ic], Xc = pf.X[ic];
     const Mat3 Fc = pf.F[ic];
+    const bool band = in.band != nullptr && in.band[ic] != 0;
+    const Mat3& Gc = in.G[ic];
     for (Index k = P.begin(c); k < P.end(c); ++k) {
         if (!bonds.holds(k)) continue;
         const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
         const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];
         sumW += e.gradW;
-        fK.noalias() += sf.K[b] * e.gradW;
+        if (band)
+            fK.noalias() += sf.P[b] * (Gc * e.gradW);  // Σ ω_b P(b) g_cb
+        else
+            fK.noalias() += sf.K[b] * e.gradW;
         const Vec3 xcb = xc - pf.x[b];
         if constexpr (Viscous) {
             const double q =
@@ -191,7 +199,8 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
             fh += hourglassPairForce(in.alphaE, Fc, pf.F[b], pf.X[b] - Xc, -xcb, weight);
         }
     }
-    finishParticle<Viscous, Hourglass>(sf, c, sumW, fK, sumQW, fN, fh, force, parts);
+    const Vec3 fStress = band ? Vec3(in.V[ic] * fK - sf.K[ic] * sumW) : Vec3(sf.K[ic] * sumW + fK);
+    finishParticle<Viscous, Hourglass>(sf, c, fStress, sumQW, fN, fh, force, parts);
 }
 
 template <bool Viscous, bool Hourglass>
@@ -218,10 +227,13 @@ void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& 
 
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
-                   std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds) {
+                   std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds,
+                   const Mat3* G) {
     const ForceView in{components(factors.K),
                        components(factors.N),
                        components(fields.F),
+                       G != nullptr ? G : ref.G.data(),
+                       ref.oversetBand.empty() ? nullptr : ref.oversetBand.data(),
                        components(fields.x),
                        components(fields.v),
                        components(fields.X),

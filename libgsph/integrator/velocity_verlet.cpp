@@ -66,6 +66,7 @@ void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const M
     const Mat3 N = s.ref.quadVolume[ia] * C * s.G[ia];
     w.factors.N.set(ia, N);
     w.factors.K.set(ia, point.cauchy * N);
+    if (!w.factors.P.empty()) w.factors.P.set(ia, point.cauchy * C);  // J σ F^{-T}
     w.factors.density[ia] = point.density;
     w.factors.soundSpeed[ia] = model.waveSpeed(point);
     w.fields.F.set(ia, F);
@@ -103,6 +104,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     StepWorkspace& w = s.work;
     w.factors.N.set(ia, Mat3::Zero());
     w.factors.K.set(ia, Mat3::Zero());
+    if (!w.factors.P.empty()) w.factors.P.set(ia, Mat3::Zero());
     w.factors.density[ia] = point.density;
     w.factors.soundSpeed[ia] = model.waveSpeed(point);
     w.fields.F.set(ia, s.state.F[ia]);
@@ -157,8 +159,8 @@ std::vector<double> stretchByParticle(const Reference& ref, const std::vector<do
 
 }  // namespace
 
-void StepWorkspace::resize(std::size_t n) {
-    factors.resize(n);
+void StepWorkspace::resize(std::size_t n, bool overset) {
+    factors.resize(n, overset);
     fields.resize(n);
     force.assign(n, Vec3::Zero());
     lengthScale.assign(n, 0.0);
@@ -183,10 +185,11 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
                 throw InputError("constraint '" + c.name + "' names particle " + std::to_string(a) +
                                  " outside [0, " + std::to_string(ref.size()) + ")");
     const auto n = static_cast<std::size_t>(ref.size());
-    work_.resize(n);
+    work_.resize(n, !ref.oversetBand.empty());
     for (std::size_t a = 0; a < n; ++a) work_.fields.X.set(a, ref.X[a]);
     for (const BodyRange& body : bodies_)
-        work_.blocks.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end));
+        work_.blocks.push_back(
+            buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetBand));
     if (options_.viscosity.enabled()) work_.parts.viscous.assign(n, Vec3::Zero());
     if (options_.hourglass != 0.0) work_.parts.hourglass.assign(n, Vec3::Zero());
 }
@@ -240,7 +243,7 @@ void VelocityVerlet::computeAccelerations(State& state) {
         fo.hourglass = options_.hourglass;
         fo.youngsModulus = elasticConstants(*body.material).youngsModulus;
         internalForce(ref_, work_.fields, work_.factors, work_.blocks[b], fo, work_.force,
-                      work_.parts, bonds_.view(state));
+                      work_.parts, bonds_.view(state), bonds_.G().data());
     }
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);

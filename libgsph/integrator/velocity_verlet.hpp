@@ -56,7 +56,7 @@ struct StepWorkspace {
     std::vector<double> lengthScale;    ///< current spacing ℓ_a
     std::vector<std::uint8_t> failure;  ///< per particle: why steps 3–4 failed (0: they did not)
     std::vector<double> partialSums;    ///< scratch of deterministicSum
-    void resize(std::size_t n);
+    void resize(std::size_t n, bool overset = false);
 };
 
 class VelocityVerlet {

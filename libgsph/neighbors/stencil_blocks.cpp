@@ -66,13 +66,21 @@ std::size_t StencilBlocks::bytes() const {
     return b;
 }
 
-StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end) {
+StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end,
+                                 const std::vector<std::uint8_t>& csrOnly) {
+    const auto stencilAllowed = [&](Index a) {
+        return csrOnly.empty() || csrOnly[static_cast<std::size_t>(a)] == 0;
+    };
     StencilBlocks out;
     std::map<std::vector<Index>, Index> known;  // relative list → stencil id
     Index csrBegin = begin;                     // start of the pending CSR stretch
     for (Index a = begin; a < end;) {
+        if (!stencilAllowed(a)) {
+            ++a;
+            continue;
+        }
         Index runEnd = a + 1;
-        while (runEnd < end && sameStencil(pairs, a, runEnd)) ++runEnd;
+        while (runEnd < end && stencilAllowed(runEnd) && sameStencil(pairs, a, runEnd)) ++runEnd;
         if (runEnd - a < kMinStencilRun) {
             a = runEnd;
             continue;

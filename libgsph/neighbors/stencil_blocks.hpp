@@ -15,6 +15,7 @@
 // {(a + delta[k], kernelId[k])} in the same order. Built once per body; read-only afterwards.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "core/types.hpp"
@@ -56,7 +57,10 @@ struct StencilBlocks {
     std::size_t bytes() const;
 };
 
-/// Partitions the particles [begin, end) of one body into stencil and CSR blocks.
-StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end);
+/// Partitions the particles [begin, end) of one body into stencil and CSR blocks. Particles
+/// flagged in `csrOnly` (per particle; empty = none, e.g. the overset band) always take the
+/// CSR path.
+StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end,
+                                 const std::vector<std::uint8_t>& csrOnly = {});
 
 }  // namespace gsph

@@ -29,6 +29,26 @@ struct SpaceSearch {
     Index tableStart = 0;      // first kernel-table entry of this space
 };
 
+// A point of a space's search: a particle at home (points 0 … n−1 are the particles
+// themselves) or a transient particle's coordinates in another space (DESIGN §6).
+struct SearchPoint {
+    Index owner = 0;
+    Index space = 0;
+    Vec3 theta = Vec3::Zero();
+    double omega = 0.0;  // θ-volume of a transient point (0 at home: the space's Δθ^d)
+};
+
+std::vector<SearchPoint> searchPoints(const Reference& ref) {
+    std::vector<SearchPoint> points(ref.X.size() + ref.overset.size());
+    for (std::size_t a = 0; a < ref.X.size(); ++a)
+        points[a] = {static_cast<Index>(a), ref.space[a], ref.theta[a], 0.0};
+    for (std::size_t e = 0; e < ref.overset.size(); ++e) {
+        const OversetEntry& o = ref.overset[e];
+        points[ref.X.size() + e] = {o.particle, o.space, o.theta, o.omega};
+    }
+    return points;
+}
+
 Vec3 minimumImage(Vec3 r, const SpaceSearch& s) {
     for (int d = 0; d < 3; ++d)
         if (s.lattice->periodic[d]) r[d] -= s.period[d] * std::floor(r[d] / s.period[d] + 0.5);
@@ -82,19 +102,21 @@ std::vector<SpaceSearch> prepareSpaces(Reference& ref) {
     return out;
 }
 
-// Calls visit(b, r) for every candidate b of particle a (r = θ_a − θ_b, minimum image) within
-// the support; implemented by the two search structures below.
+// Calls visit(p, r) for every search point p in particle a's home space within the support
+// (r = θ_a − θ_p, minimum image); implemented by the two search structures below.
 class CellList {
   public:
     // On a space whose particles all sit on lattice sites, the cells are the lattice cells
     // (at most one particle each) and the visited cells are the sites within the support: no
     // wasted distance checks. Otherwise cells of one support radius and their 27 neighbours.
-    CellList(const Reference& ref, const std::vector<SpaceSearch>& spaces) : ref_(ref) {
+    CellList(const Reference& ref, const std::vector<SpaceSearch>& spaces,
+             const std::vector<SearchPoint>& points)
+        : ref_(ref), points_(points) {
         grids_.resize(spaces.size());
         std::vector<bool> onLattice(spaces.size(), true);
-        for (Index a = 0; a < ref.size(); ++a) {
-            const auto s = static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)]);
-            const Vec3 t = ref.theta[static_cast<std::size_t>(a)] / spaces[s].lattice->dtheta;
+        for (const SearchPoint& p : points) {
+            const auto s = static_cast<std::size_t>(p.space);
+            const Vec3 t = p.theta / spaces[s].lattice->dtheta;
             for (int d = 0; d < ref.dim.value; ++d) {
                 const double i = t[d] - 0.5;
                 if (std::abs(i - std::floor(i + 0.5)) > kLatticeTolerance || i < -0.5 ||
@@ -126,19 +148,16 @@ class CellList {
             for (int d = 0; d < 3; ++d)
                 g.mayAlias = g.mayAlias || (spaces[s].lattice->periodic[d] && g.n[d] < 2 * m + 1);
         }
-        // θ may lie off the lattice box (never on one space today, but cheap to allow).
-        const Index n = ref.size();
-        cellOf_.resize(static_cast<std::size_t>(n));
-        std::vector<std::vector<Index>> members(spaces.size());
-        for (Index a = 0; a < n; ++a) {
-            const Index s = ref.space[static_cast<std::size_t>(a)];
-            Grid& g = grids_[static_cast<std::size_t>(s)];
-            cellOf_[static_cast<std::size_t>(a)] =
-                g.cellIndex(ref.theta[static_cast<std::size_t>(a)]);
-        }
+        // θ may lie off the lattice box (a transient point past a block's boundary): it joins
+        // the nearest boundary cell.
+        const auto n = static_cast<Index>(points.size());
+        cellOf_.resize(points.size());
+        for (std::size_t p = 0; p < points.size(); ++p)
+            cellOf_[p] =
+                grids_[static_cast<std::size_t>(points[p].space)].cellIndex(points[p].theta);
         for (Grid& g : grids_) g.start.assign(static_cast<std::size_t>(g.cells()) + 1, 0);
         for (Index a = 0; a < n; ++a)
-            ++grids_[static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)])]
+            ++grids_[static_cast<std::size_t>(points[static_cast<std::size_t>(a)].space)]
                   .start[static_cast<std::size_t>(cellOf_[static_cast<std::size_t>(a)]) + 1];
         for (Grid& g : grids_) {
             for (std::size_t c = 1; c < g.start.size(); ++c) g.start[c] += g.start[c - 1];
@@ -148,7 +167,7 @@ class CellList {
         for (std::size_t s = 0; s < grids_.size(); ++s)
             fill[s].assign(grids_[s].start.begin(), grids_[s].start.end() - 1);
         for (Index a = 0; a < n; ++a) {  // ascending a ⇒ each cell's members sorted
-            const std::size_t s = static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)]);
+            const auto s = static_cast<std::size_t>(points[static_cast<std::size_t>(a)].space);
             const Index c = cellOf_[static_cast<std::size_t>(a)];
             grids_[s].members[static_cast<std::size_t>(fill[s][static_cast<std::size_t>(c)]++)] = a;
         }
@@ -172,10 +191,10 @@ class CellList {
             }
             for (Index k = g.start[static_cast<std::size_t>(cell)];
                  k < g.start[static_cast<std::size_t>(cell) + 1]; ++k) {
-                const Index b = g.members[static_cast<std::size_t>(k)];
+                const Index p = g.members[static_cast<std::size_t>(k)];
                 const Vec3 r =
-                    minimumImage(ta - ref_.theta[static_cast<std::size_t>(b)], *g.search);
-                if (r.squaredNorm() < g.search->radius2) visit(b, r);
+                    minimumImage(ta - points_[static_cast<std::size_t>(p)].theta, *g.search);
+                if (r.squaredNorm() < g.search->radius2) visit(p, r);
             }
         }
     }
@@ -219,6 +238,7 @@ class CellList {
     };
 
     const Reference& ref_;
+    const std::vector<SearchPoint>& points_;
     std::vector<Grid> grids_;
     std::vector<Index> cellOf_;
 };
@@ -227,13 +247,14 @@ class CellList {
 // particles within one support of either end.
 class KdTreeSearch {
   public:
-    KdTreeSearch(const Reference& ref, const std::vector<SpaceSearch>& spaces) : ref_(ref) {
+    KdTreeSearch(const Reference& ref, const std::vector<SpaceSearch>& spaces,
+                 const std::vector<SearchPoint>& points)
+        : ref_(ref) {
         trees_.resize(spaces.size());
         for (std::size_t s = 0; s < spaces.size(); ++s) trees_[s].search = &spaces[s];
-        for (Index a = 0; a < ref.size(); ++a) {
-            Tree& t = trees_[static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)])];
-            addWithImages(t, a, ref.theta[static_cast<std::size_t>(a)], 0);
-        }
+        for (std::size_t p = 0; p < points.size(); ++p)
+            addWithImages(trees_[static_cast<std::size_t>(points[p].space)], static_cast<Index>(p),
+                          points[p].theta, 0);
         for (Tree& t : trees_) {
             t.index =
                 std::make_unique<Index3>(3, t.cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
@@ -298,17 +319,19 @@ class KdTreeSearch {
 };
 
 template <class Search>
-void fillPairs(Reference& ref, const std::vector<SpaceSearch>& spaces, const Search& search) {
+void fillPairs(Reference& ref, const std::vector<SpaceSearch>& spaces,
+               const std::vector<SearchPoint>& points, const Search& search) {
     const Index n = ref.size();
     PairList& P = ref.pairs;
     std::vector<Index> count(static_cast<std::size_t>(n), 0);
-    auto sameBody = [&](Index a, Index b) {
+    auto joins = [&](Index a, Index p) {
+        const Index b = points[static_cast<std::size_t>(p)].owner;
         return a != b &&
                ref.body[static_cast<std::size_t>(a)] == ref.body[static_cast<std::size_t>(b)];
     };
     parallelFor(n, [&](Index a) {
         Index c = 0;
-        search.forEachCandidate(a, [&](Index b, const Vec3&) { c += sameBody(a, b) ? 1 : 0; });
+        search.forEachCandidate(a, [&](Index p, const Vec3&) { c += joins(a, p) ? 1 : 0; });
         count[static_cast<std::size_t>(a)] = c;
     });
     P.offset.assign(static_cast<std::size_t>(n) + 1, 0);
@@ -317,13 +340,18 @@ void fillPairs(Reference& ref, const std::vector<SpaceSearch>& spaces, const Sea
             P.offset[static_cast<std::size_t>(a)] + count[static_cast<std::size_t>(a)];
     P.neighbor.resize(static_cast<std::size_t>(P.offset.back()));
     P.kernelId.resize(P.neighbor.size());
+    // A neighbour joins a's list once: a transient point lives in another space than its
+    // owner's home, so its owner is never also at home in a's space. Off-lattice pairs and
+    // every transient pair (its ω is not the space's Δθ^d) are marked −1 − point for now.
     parallelFor(n, [&](Index a) {
         std::vector<std::pair<Index, Index>> local;
         local.reserve(static_cast<std::size_t>(count[static_cast<std::size_t>(a)]));
         const SpaceSearch& s =
             spaces[static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)])];
-        search.forEachCandidate(a, [&](Index b, const Vec3& r) {
-            if (sameBody(a, b)) local.emplace_back(b, latticeKernelId(r, s));
+        search.forEachCandidate(a, [&](Index p, const Vec3& r) {
+            if (!joins(a, p)) return;
+            const Index id = p < n ? latticeKernelId(r, s) : -1;
+            local.emplace_back(points[static_cast<std::size_t>(p)].owner, id >= 0 ? id : -1 - p);
         });
         std::sort(local.begin(), local.end());
         Index k = P.offset[static_cast<std::size_t>(a)];
@@ -333,18 +361,20 @@ void fillPairs(Reference& ref, const std::vector<SpaceSearch>& spaces, const Sea
             ++k;
         }
     });
-    // Off-lattice offsets (not produced by one lattice space) each get their own table entry.
+    // Off-lattice offsets and transient points each get their own table entry.
     for (Index a = 0; a < n; ++a)
         for (Index k = P.begin(a); k < P.end(a); ++k) {
-            if (P.kernelId[static_cast<std::size_t>(k)] >= 0) continue;
-            const Index b = P.neighbor[static_cast<std::size_t>(k)];
+            const Index id = P.kernelId[static_cast<std::size_t>(k)];
+            if (id >= 0) continue;
+            const SearchPoint& point = points[static_cast<std::size_t>(-1 - id)];
             const std::size_t s = static_cast<std::size_t>(ref.space[static_cast<std::size_t>(a)]);
-            const Vec3 r = minimumImage(
-                ref.theta[static_cast<std::size_t>(a)] - ref.theta[static_cast<std::size_t>(b)],
-                spaces[s]);
+            const Vec3 r =
+                minimumImage(ref.theta[static_cast<std::size_t>(a)] - point.theta, spaces[s]);
             const CubicBSpline kernel(ref.dim.value, ref.kappa * ref.spaces[s].dtheta);
+            const double omega =
+                point.owner == -1 - id ? thetaVolume(ref.dim, ref.spaces[s]) : point.omega;
             P.kernelId[static_cast<std::size_t>(k)] = static_cast<Index>(P.table.size());
-            P.table.push_back(kernelEntry(kernel, thetaVolume(ref.dim, ref.spaces[s]), r));
+            P.table.push_back(kernelEntry(kernel, omega, r));
         }
 }
 
@@ -365,6 +395,21 @@ void checkReference(const Reference& ref) {
         if (ref.dim.value == 2 && ref.theta[a][2] != ref.theta[0][2])
             throw InputError("2-D reference with θ_z varying (particle " + std::to_string(a) + ")");
     }
+    for (std::size_t e = 0; e < ref.overset.size(); ++e) {
+        const OversetEntry& o = ref.overset[e];
+        const std::string where = "overset entry " + std::to_string(e) + ": ";
+        if (o.particle < 0 || static_cast<std::size_t>(o.particle) >= n)
+            throw InputError(where + "particle " + std::to_string(o.particle) + " out of range");
+        if (o.space < 0 || static_cast<std::size_t>(o.space) >= ref.spaces.size())
+            throw InputError(where + "unknown space id " + std::to_string(o.space));
+        if (o.space == ref.space[static_cast<std::size_t>(o.particle)])
+            throw InputError(where + "particle " + std::to_string(o.particle) +
+                             " is transient in its own home space");
+        if (!o.theta.allFinite() || !(o.omega > 0.0) || !std::isfinite(o.omega))
+            throw InputError(where + "θ must be finite and ω > 0");
+        if (ref.dim.value == 2 && o.theta[2] != ref.theta[0][2])
+            throw InputError(where + "2-D reference with θ_z varying");
+    }
 }
 
 }  // namespace
@@ -372,10 +417,11 @@ void checkReference(const Reference& ref) {
 void buildPairs(Reference& ref, SearchMethod method) {
     checkReference(ref);
     const std::vector<SpaceSearch> spaces = prepareSpaces(ref);
+    const std::vector<SearchPoint> points = searchPoints(ref);
     if (method == SearchMethod::CellList)
-        fillPairs(ref, spaces, CellList(ref, spaces));
+        fillPairs(ref, spaces, points, CellList(ref, spaces, points));
     else
-        fillPairs(ref, spaces, KdTreeSearch(ref, spaces));
+        fillPairs(ref, spaces, points, KdTreeSearch(ref, spaces, points));
 }
 
 }  // namespace gsph

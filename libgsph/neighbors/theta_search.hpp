@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Neighbour search in θ-space, run once on the reference configuration (DESIGN §3).
 //
-// Pairs join particles of the same body and the same home space whose θ-distance (minimum
-// image across periodic indices) is below the kernel support 2h, h = κΔθ. Two methods give the
+// Pairs join particles of the same body whose θ-distance in the first particle's home space
+// (minimum image across periodic indices) is below that space's kernel support 2h, h = κΔθ:
+// its home particles, and the transient particles of other spaces that have θ there
+// (Reference::overset, DESIGN §6), each with its own quadrature weight ω. Two methods give the
 // same PairList: a cell list on the θ-lattice (the default: faster on lattices, see
 // tests/bench/bench_neighbors.cpp) and a nanoflann k-d tree. Results are independent of the
 // thread count and of the method.

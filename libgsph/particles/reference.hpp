@@ -5,11 +5,14 @@
 //
 // Invariants after computeGeometry():
 //   * particles are sorted by body, so each body is one contiguous range;
-//   * pairs are symmetric (b in list of a ⇔ a in list of b) and never cross bodies;
+//   * pairs never cross bodies; pairs within one space are symmetric (b in list of a ⇔ a in
+//     list of b); a pair (a, b) across spaces (b transient in a's space, DESIGN §6) is taken in
+//     a's space and need not have a mirror;
 //   * F = [Σ_b ω_b (X_b − X_a) ⊗ ∇W_ab] G(a)^T + outOfPlane = I to round-off (DESIGN §3).
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "core/types.hpp"
@@ -29,6 +32,16 @@ inline double thetaVolume(const Dimension& dim, const LatticeSpace& s) {
     return dim.value == 2 ? s.dtheta * s.dtheta : s.dtheta * s.dtheta * s.dtheta;
 }
 
+/// A particle's coordinates in a space other than its home space (DESIGN §6): the particle is
+/// *transient* there, and the home particles of that space within one kernel support take it
+/// as a neighbour, in that space's θ, with that space's quadrature weight.
+struct OversetEntry {
+    Index particle = 0;         ///< the transient particle
+    Index space = 0;            ///< the other space
+    Vec3 theta = Vec3::Zero();  ///< its θ in that space
+    double omega = 0.0;         ///< θ-volume in that space: V / det(∂X/∂θ_space) (DESIGN §3)
+};
+
 struct Reference {
     Dimension dim;
     double kappa = 1.2;  ///< h = κΔθ (DESIGN §3)
@@ -41,6 +54,7 @@ struct Reference {
     std::vector<double> volume;   ///< exact cell volume from the map or mesh [m³] (per m in 2-D)
     std::vector<Index> body;      ///< body id; particles sorted by it
     std::vector<Index> space;     ///< home space id
+    std::vector<OversetEntry> overset;  ///< transient coordinates (empty: one space per body)
 
     // Derived once (computeGeometry).
     std::vector<double> omega;  ///< θ-volume ω = Δθ^d (DESIGN §3; folded into pairs.table)
@@ -53,6 +67,13 @@ struct Reference {
     std::vector<double> smoothingLength;  ///< physical h = κΔθ (det M)^{1/d} [m] (viscosity)
     std::vector<double> metricCondition;  ///< condition number of M = ∂X/∂θ
     PairList pairs;
+    /// Per particle (computeGeometry, DESIGN §6): 1 if it lies within two kernel supports of
+    /// the coarser side of an overset interface (the *band*: it takes the difference form of
+    /// the force, exact for uniform and linear stress), else 0. Empty without overset.
+    std::vector<std::uint8_t> oversetBand;
+    bool inOversetBand(Index a) const {
+        return !oversetBand.empty() && oversetBand[static_cast<std::size_t>(a)] != 0;
+    }
 
     Index size() const { return static_cast<Index>(X.size()); }
 };

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "overset/overset_band.hpp"
 
 namespace gsph {
 namespace {
@@ -97,6 +98,7 @@ void computeGeometry(Reference& ref) {
                                      ": metric ∂X/∂θ is singular or inverted (det ≤ 0)",
                                  static_cast<long>(a));
     }
+    markOversetBand(ref);
 }
 
 }  // namespace gsph
