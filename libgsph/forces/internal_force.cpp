@@ -180,10 +180,12 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
         if (!bonds.holds(k)) continue;
         const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
         const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];
+        // A pair across spaces has no mirror: its transposed term comes from b's list below.
+        const bool across = ref.space[b] != ref.space[ic];
         sumW += e.gradW;
         if (band)
             fK.noalias() += sf.P[b] * (Gc * e.gradW);  // Σ ω_b P(b) g_cb
-        else
+        else if (!across)
             fK.noalias() += sf.K[b] * e.gradW;
         const Vec3 xcb = xc - pf.x[b];
         if constexpr (Viscous) {
@@ -192,11 +194,34 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
                                     0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
                                     0.5 * (in.rho[ic] + in.rho[b]));
             sumQW += q * e.gradW;
-            fN.noalias() += q * (sf.N[b] * e.gradW);
+            if (!across) fN.noalias() += q * (sf.N[b] * e.gradW);
         }
         if constexpr (Hourglass) {
             const double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
-            fh += hourglassPairForce(in.alphaE, Fc, pf.F[b], pf.X[b] - Xc, -xcb, weight);
+            const Vec3 pair =
+                hourglassPairForce(in.alphaE, Fc, pf.F[b], pf.X[b] - Xc, -xcb, weight);
+            fh += across ? Vec3(0.5 * pair) : pair;  // across: half here, half on b (below)
+        }
+    }
+    // Transposed terms of the pairs (b, c) across spaces that b's list holds (DESIGN §4, §6).
+    for (Index slot = ref.crossOffset.empty() ? 0 : ref.crossOffset[ic];
+         !ref.crossOffset.empty() && slot < ref.crossOffset[ic + 1]; ++slot) {
+        const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
+        if (!bonds.holds(k)) continue;
+        const auto b = static_cast<std::size_t>(ref.crossOwner[static_cast<std::size_t>(slot)]);
+        const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];  // w_bc
+        if (!band) fK.noalias() -= sf.K[b] * e.gradW;
+        const Vec3 xbc = pf.x[b] - xc;
+        if constexpr (Viscous) {
+            const double q =
+                viscousPairPressure(in.viscosity, (pf.v[b] - vc).dot(xbc), xbc.squaredNorm(),
+                                    0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
+                                    0.5 * (in.rho[ic] + in.rho[b]));
+            fN.noalias() -= q * (sf.N[b] * e.gradW);
+        }
+        if constexpr (Hourglass) {
+            const double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
+            fh -= 0.5 * hourglassPairForce(in.alphaE, pf.F[b], Fc, Xc - pf.X[b], -xbc, weight);
         }
     }
     const Vec3 fStress = band ? Vec3(in.V[ic] * fK - sf.K[ic] * sumW) : Vec3(sf.K[ic] * sumW + fK);

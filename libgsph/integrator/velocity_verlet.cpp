@@ -189,7 +189,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     for (std::size_t a = 0; a < n; ++a) work_.fields.X.set(a, ref.X[a]);
     for (const BodyRange& body : bodies_)
         work_.blocks.push_back(
-            buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetBand));
+            buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
     if (options_.viscosity.enabled()) work_.parts.viscous.assign(n, Vec3::Zero());
     if (options_.hourglass != 0.0) work_.parts.hourglass.assign(n, Vec3::Zero());
 }

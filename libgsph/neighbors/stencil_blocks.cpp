@@ -31,9 +31,14 @@ bool sameStencil(const PairList& P, Index a, Index b) {
     return true;
 }
 
+// Splits [begin, end) into ⌈len/kMaxBlock⌉ blocks of near-equal length, so that a stencil run
+// never leaves a remainder shorter than kMinStencilRun (the strips need ≥ kLanes particles).
 void appendBlocks(std::vector<ParticleBlock>& blocks, Index begin, Index end, Index stencil) {
-    for (Index b = begin; b < end; b += kMaxBlock)
-        blocks.push_back({b, std::min(end, b + kMaxBlock), stencil});
+    const Index len = end - begin;
+    if (len <= 0) return;
+    const Index count = (len + kMaxBlock - 1) / kMaxBlock;
+    for (Index i = 0; i < count; ++i)
+        blocks.push_back({begin + len * i / count, begin + len * (i + 1) / count, stencil});
 }
 
 Stencil makeStencil(const PairList& P, Index a) {

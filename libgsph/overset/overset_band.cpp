@@ -21,7 +21,31 @@ void markOversetBand(Reference& ref) {
             }
         }
     ref.oversetBand.clear();
+    ref.crossOffset.clear();
+    ref.crossPair.clear();
+    ref.crossOwner.clear();
+    ref.oversetCoupled.clear();
     if (!any) return;
+    // Transposed pairs: (b, c) in b's list, b and c in different spaces, listed under c in
+    // ascending (b, k): the order the force sums them, the same on every run.
+    ref.crossOffset.assign(n + 1, 0);
+    for (Index b = 0; b < ref.size(); ++b)
+        for (Index k = P.begin(b); k < P.end(b); ++k) {
+            const auto c = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+            if (ref.space[c] != ref.space[static_cast<std::size_t>(b)]) ++ref.crossOffset[c + 1];
+        }
+    for (std::size_t c = 0; c < n; ++c) ref.crossOffset[c + 1] += ref.crossOffset[c];
+    ref.crossPair.resize(static_cast<std::size_t>(ref.crossOffset[n]));
+    ref.crossOwner.resize(ref.crossPair.size());
+    std::vector<Index> fill(ref.crossOffset.begin(), ref.crossOffset.end() - 1);
+    for (Index b = 0; b < ref.size(); ++b)
+        for (Index k = P.begin(b); k < P.end(b); ++k) {
+            const auto c = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+            if (ref.space[c] == ref.space[static_cast<std::size_t>(b)]) continue;
+            const auto slot = static_cast<std::size_t>(fill[c]++);
+            ref.crossPair[slot] = k;
+            ref.crossOwner[slot] = b;
+        }
     double hMax = 0.0;
     for (std::size_t a = 0; a < n; ++a)
         if (seed[a] != 0) hMax = std::max(hMax, ref.smoothingLength[a]);
@@ -89,6 +113,9 @@ void markOversetBand(Reference& ref) {
     }
     for (std::size_t a = 0; a < n; ++a)
         if (ref.oversetBand[a] != 0 && nearFreeFace(a)) ref.oversetBand[a] = 0;
+    ref.oversetCoupled.assign(n, 0);
+    for (std::size_t a = 0; a < n; ++a)
+        ref.oversetCoupled[a] = seed[a] != 0 || ref.oversetBand[a] != 0 ? 1 : 0;
 }
 
 }  // namespace gsph

@@ -8,8 +8,9 @@
 //     f_c = V_c Σ_b ω_b (P(b) − P(c)) g_cb,
 // which is the corrected divergence of P: exact for uniform and linear stress. Every other
 // particle keeps the pairwise form and still receives the transposed term from each neighbour,
-// band or not, so momentum is exact away from the band and its error, confined to the band,
-// falls with the spacing.
+// band or not (for a pair across spaces, read from the neighbour's own list, since such pairs
+// need not have a mirror: Reference::crossPair), so momentum is exact away from the band and its
+// error, confined to the band, falls with the spacing.
 //
 // Seeds: every particle with a pair across spaces (in its own list, or in a list that holds
 // it). The band: every particle joined to a seed through pairs within the physical distance
@@ -23,7 +24,8 @@
 
 namespace gsph {
 
-/// Fills ref.oversetBand (left empty when no pair crosses spaces). Needs ref.pairs and
+/// Fills ref.oversetBand, the transposed cross pairs and ref.oversetCoupled (all left empty
+/// when no pair crosses spaces). Needs ref.pairs and
 /// ref.smoothingLength (computeGeometry calls it last).
 void markOversetBand(Reference& ref);
 

@@ -74,6 +74,17 @@ struct Reference {
     bool inOversetBand(Index a) const {
         return !oversetBand.empty() && oversetBand[static_cast<std::size_t>(a)] != 0;
     }
+    /// Pairs across spaces need not have a mirror, so the pairwise form takes their transposed
+    /// term from the other side's list: for each particle c, the pairs k = (b, c) of other
+    /// spaces' lists that hold c (CSR crossOffset[c] … crossOffset[c+1] into crossPair, with
+    /// crossOwner = b). Empty without overset.
+    std::vector<Index> crossOffset, crossPair, crossOwner;
+    /// Per particle: 1 if it has a pair across spaces, in its own list or another's, or lies in
+    /// the band: it takes the CSR path. Empty without overset.
+    std::vector<std::uint8_t> oversetCoupled;
+    bool isOversetCoupled(Index a) const {
+        return !oversetCoupled.empty() && oversetCoupled[static_cast<std::size_t>(a)] != 0;
+    }
 
     Index size() const { return static_cast<Index>(X.size()); }
 };

@@ -195,3 +195,59 @@ TEST(Overset, AwayFromTheBandMomentumIsExact) {
 
 }  // namespace
 }  // namespace gsph
+
+namespace gsph {
+namespace {
+
+// Kinetic energy of the particles left of x at the end of a run in which a smooth compression
+// pulse, started in the coarse block, crosses into the fine one.
+struct PulseRun {
+    double incident = 0.0;   // kinetic energy of the pulse at the start
+    double reflected = 0.0;  // kinetic energy left in the coarse block after the crossing
+};
+
+PulseRun crossingPulse(const testing::TwoBlocks& t) {
+    const ElasticConstants e(7800.0, 200e9, 0.0);  // ν = 0: a 1-D bar wave, c = √(E/ρ)
+    const double c = e.barWaveSpeed(), v0 = 1.0, lambda = 0.4, x0 = 0.1;
+    Simulation sim(t.ref, {HypoElastic(e)}, SolverOptions{});
+    const auto pulse = [&](double x) {
+        const double xi = (x - x0) / lambda;
+        return xi > 0.0 && xi < 1.0 ? 0.5 * (1.0 - std::cos(2.0 * std::acos(-1.0) * xi)) : 0.0;
+    };
+    PulseRun run;
+    for (std::size_t a = 0; a < sim.state().v.size(); ++a) {
+        const double X = sim.reference().X[a][0];
+        sim.state().v[a] = Vec3(v0 * pulse(X), 0, 0);
+        sim.state().cauchy[a](0, 0) = -e.density * c * v0 * pulse(X);
+        run.incident += 0.5 * sim.reference().mass[a] * sim.state().v[a].squaredNorm();
+    }
+    // Until the pulse's tail is 0.2 m past the interface (x = 1) and its head short of x = 2.
+    sim.advanceTo((1.2 - x0) / c);
+    for (std::size_t a = 0; a < sim.state().v.size(); ++a)
+        if (sim.reference().X[a][0] < 1.0)
+            run.reflected += 0.5 * sim.reference().mass[a] * sim.state().v[a].squaredNorm();
+    return run;
+}
+
+TEST(Overset, BandHalvesTheReflectionOfAWaveCrossingA1To2Interface) {
+    // Amplitude reflection √(E_reflected/E_incident) of a smooth pulse (λ = 16 coarse spacings)
+    // crossing into a block twice as fine (2-D strip, free faces), with the band's difference
+    // form and with the pairwise form alone; and on two blocks of equal spacing (what
+    // dispersion alone leaves behind). Measured: 11.3 % with the band, 23 % without, 5.5 % for
+    // equal spacing; issue #4 asks for < 3 %, which this formulation does not reach yet.
+    const testing::TwoBlocks graded = testing::twoBlocks(2, 8, 2, 1.2, 1.0, 0.2);
+    testing::TwoBlocks pairwise = graded;
+    std::fill(pairwise.ref.oversetBand.begin(), pairwise.ref.oversetBand.end(), 0);
+    const PulseRun band = crossingPulse(graded);
+    const PulseRun plain = crossingPulse(pairwise);
+    const PulseRun even = crossingPulse(testing::twoBlocks(2, 8, 1, 1.2, 1.0, 0.2));
+    const auto amplitude = [](const PulseRun& r) { return std::sqrt(r.reflected / r.incident); };
+    std::printf(
+        "[overset] pulse across a 1:2 interface: amplitude reflected %.1f %% with the band, "
+        "%.1f %% pairwise only, %.1f %% for equal spacing\n",
+        100 * amplitude(band), 100 * amplitude(plain), 100 * amplitude(even));
+    EXPECT_LT(amplitude(band), amplitude(plain) / 1.5);
+}
+
+}  // namespace
+}  // namespace gsph
