@@ -207,6 +207,10 @@ TEST(JohnsonCook, DamageWithHeatingMatchesTheIntegralOfTheFailureStrain) {
         } else {
             failed = true;
             EXPECT_NEAR(integral, 1.0, 0.005) << "fails when ∫dε̄p/εf reaches 1";
+            std::printf(
+                "[johnson-cook] heated damage: failed at ε̄p = %.4f, T = %.0f K, "
+                "∫dε̄p/εf = %.4f\n",
+                rows[i].plasticStrain, rows[i].temperature, integral);
         }
     }
     EXPECT_TRUE(failed);
