@@ -188,13 +188,7 @@ std::filesystem::path resolveMaterialFile(const std::filesystem::path& caseFolde
 MaterialSpec readMaterialFile(const std::filesystem::path& path) {
     const std::string file = path.string();
     if (!std::filesystem::is_regular_file(path)) throw InputError(file + ": no such material file");
-    toml::table root;
-    try {
-        root = toml::parse_file(file);
-    } catch (const toml::parse_error& e) {
-        throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " +
-                         std::string(e.description()));
-    }
+    const toml::table root = parseTomlFile(file);
     MaterialSpec m;
     m.name = path.stem().string();
     m.file = path;

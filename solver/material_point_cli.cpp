@@ -19,13 +19,7 @@ namespace {
 using Kind = LoadingPath::Kind;
 
 LoadingPath readCompactPath(const std::string& file) {
-    toml::table root;
-    try {
-        root = toml::parse_file(file);
-    } catch (const toml::parse_error& e) {
-        throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " +
-                         std::string(e.description()));
-    }
+    const toml::table root = parseTomlFile(file);
     const TomlKeys keys(file, root, "the path");
     keys.rejectUnknown(
         {"loading", "strain_rate", "final_strain", "temperature", "steps", "output_every"});

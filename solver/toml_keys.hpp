@@ -17,6 +17,16 @@
 
 namespace gsph::solver {
 
+/// Parses a TOML file; a syntax error becomes InputError "FILE:LINE: what".
+inline toml::table parseTomlFile(const std::string& file) {
+    try {
+        return toml::parse_file(file);
+    } catch (const toml::parse_error& e) {
+        throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " +
+                         std::string(e.description()));
+    }
+}
+
 class TomlKeys {
   public:
     enum class Sign { Any, Positive, NonNegative };

@@ -20,6 +20,7 @@
 
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/johnson_cook_materials.hpp"
 
 namespace {
 
@@ -70,18 +71,7 @@ int main(int argc, char** argv) {
     Material material = HypoElastic(steel);
     if (plastic) {
         // materials/weldox_460e.toml; the 50 m/s impact below drives it well past yield.
-        JohnsonCookParams p;
-        p.yieldStress = 490e6;
-        p.hardeningModulus = 807e6;
-        p.hardeningExponent = 0.73;
-        p.strainRateCoefficient = 0.0114;
-        p.referenceStrainRate = 5e-4;
-        p.rateForm = StrainRateForm::Power;
-        p.thermalSofteningExponent = 0.94;
-        p.meltingTemperature = 1800.0;
-        p.specificHeat = 452.0;
-        material = JohnsonCook(steel, p, EquationOfState::linear(7800.0, steel.bulkModulus()),
-                               JohnsonCookDamage{{0.0705, 1.732, -0.54, -0.015, 0.0}});
+        material = testing::withLinearEos(steel, testing::weldoxParams(), testing::weldoxDamage());
     }
     Simulation sim(std::move(ref), {material}, options);
     // A compression wave from an impact on one face: every term of the step is active.

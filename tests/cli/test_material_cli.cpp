@@ -13,6 +13,7 @@
 
 #include "case_config.hpp"
 #include "core/error.hpp"
+#include "support/csv.hpp"
 #include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 
@@ -20,6 +21,7 @@ namespace gsph {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readCsv;
 using test::runCommand;
 using test::TempDir;
 
@@ -127,22 +129,6 @@ TEST(MaterialLibrary, BadMaterialFilesNameTheirLine) {
     const std::string cited = "\nspecific_heat = \"J";  // the source line, not the constant
     uncited.replace(uncited.find(cited), cited.size(), "\nspecfic_heat = \"J");
     expectError(uncited, "", "sources.specfic_heat must cite a constant of this material");
-}
-
-std::vector<std::vector<double>> readCsv(const fs::path& path, std::vector<std::string>& header) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    std::stringstream hs(line);
-    for (std::string col; std::getline(hs, col, ',');) header.push_back(col);
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::stringstream ls(line);
-        for (std::string cell; std::getline(ls, cell, ',');) row.push_back(std::stod(cell));
-        rows.push_back(row);
-    }
-    return rows;
 }
 
 TEST(MaterialPointCli, CopperInUniaxialStressFollowsTheClosedForm) {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "io/snapshot.hpp"
+#include "support/csv.hpp"
 #include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 
@@ -17,6 +18,7 @@ namespace gsph {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readCsv;
 using test::runCommand;
 using test::TempDir;
 
@@ -86,22 +88,6 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         EXPECT_FALSE(fs::exists(dir / "out" / "snapshot_000000.h5"))
             << c.file << ": nothing is computed";
     }
-}
-
-std::vector<std::vector<double>> readCsv(const fs::path& path, std::vector<std::string>& header) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    std::stringstream hs(line);
-    for (std::string col; std::getline(hs, col, ',');) header.push_back(col);
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::stringstream ls(line);
-        for (std::string cell; std::getline(ls, cell, ',');) row.push_back(std::stod(cell));
-        rows.push_back(row);
-    }
-    return rows;
 }
 
 TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {

@@ -15,23 +15,10 @@
 
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/johnson_cook_materials.hpp"
 
 namespace gsph {
 namespace {
-
-JohnsonCook ofhcCopper() {
-    const ElasticConstants e(8960.0, 124e9, 0.34);
-    JohnsonCookParams p;
-    p.yieldStress = 90e6;
-    p.hardeningModulus = 292e6;
-    p.hardeningExponent = 0.31;
-    p.strainRateCoefficient = 0.025;
-    p.referenceStrainRate = 1.0;
-    p.thermalSofteningExponent = 1.09;
-    p.meltingTemperature = 1356.0;
-    p.specificHeat = 383.0;
-    return JohnsonCook(e, p, EquationOfState::linear(e.density, e.bulkModulus()));
-}
 
 std::vector<Index> particlesWhere(const Reference& ref, const std::function<bool(const Vec3&)>& f) {
     std::vector<Index> out;
@@ -47,7 +34,7 @@ TEST(PlasticEnergy, PlasticImpactOnARigidSupportBalancesItsEnergy) {
     options.hourglass = 0.1;
     Simulation sim(
         latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 8960.0, 1.2),
-        {ofhcCopper()}, options);
+        {testing::withLinearEos(testing::kCopperElastic, testing::copperParams())}, options);
     sim.constrain({"support",
                    particlesWhere(sim.reference(), [&](const Vec3& X) { return X[0] < spacing; }),
                    {}});
@@ -88,19 +75,9 @@ TEST(PlasticEnergy, PlasticImpactOnARigidSupportBalancesItsEnergy) {
 TEST(PlasticEnergy, DuctileTensionToFailureBalancesItsEnergy) {
     // Weldox 460E strength (Børvik et al. 2001) with damage constants scaled down so that the
     // bar fails within a short pull (εf ≈ 0.15 at σ* = 1/3); ends pulled apart at ±20 m/s.
-    const ElasticConstants e(7850.0, 200e9, 0.33);
-    JohnsonCookParams p;
-    p.yieldStress = 490e6;
-    p.hardeningModulus = 807e6;
-    p.hardeningExponent = 0.73;
-    p.strainRateCoefficient = 0.0114;
-    p.referenceStrainRate = 5e-4;
-    p.thermalSofteningExponent = 0.94;
-    p.meltingTemperature = 1800.0;
-    p.specificHeat = 452.0;
-    p.rateForm = StrainRateForm::Power;
-    const JohnsonCookDamage damage{{0.01, 0.17, -0.54, -0.015, 0.0}};
-    const JohnsonCook steel(e, p, EquationOfState::linear(e.density, e.bulkModulus()), damage);
+    const JohnsonCook steel =
+        testing::withLinearEos(testing::kWeldoxElastic, testing::weldoxParams(),
+                               JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}});
     const double length = 0.01, width = 0.002, spacing = length / 25, v = 20.0;
     SolverOptions options;
     options.viscosity = {1.0, 1.0};

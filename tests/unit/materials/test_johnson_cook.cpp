@@ -10,31 +10,17 @@
 
 #include "core/error.hpp"
 #include "materials/material_point_driver.hpp"
+#include "support/johnson_cook_materials.hpp"
 
 namespace gsph {
 namespace {
 
-// OFHC copper (Johnson & Cook 1983; materials/ofhc_copper.toml).
-const ElasticConstants kCopper(8960.0, 124e9, 0.34);
-
-JohnsonCookParams copperParams(double chi) {
-    JohnsonCookParams p;
-    p.yieldStress = 90e6;
-    p.hardeningModulus = 292e6;
-    p.hardeningExponent = 0.31;
-    p.strainRateCoefficient = 0.025;
-    p.referenceStrainRate = 1.0;
-    p.thermalSofteningExponent = 1.09;
-    p.roomTemperature = 293.15;
-    p.meltingTemperature = 1356.0;
-    p.specificHeat = 383.0;
-    p.taylorQuinney = chi;
-    return p;
-}
+using testing::copperParams;
+using testing::weldoxDamage;
+const ElasticConstants& kCopper = testing::kCopperElastic;
 
 JohnsonCook copper(double chi, std::optional<JohnsonCookDamage> damage = {}) {
-    return JohnsonCook(kCopper, copperParams(chi),
-                       EquationOfState::linear(kCopper.density, kCopper.bulkModulus()), damage);
+    return testing::withLinearEos(kCopper, copperParams(chi), damage);
 }
 
 LoadingPath compact(LoadingPath::Kind kind, double rate, double strain, int steps,
@@ -155,11 +141,6 @@ TEST(JohnsonCook, AdiabaticHeatingFollowsThePlasticWork) {
     EXPECT_NEAR(last.cauchy(0, 0) / closedForm(last.plasticStrain, rate, T), 1.0, 0.005);
     std::printf("[johnson-cook] adiabatic: ΔT %.2f K, χ∫σdε̄p/(ρCp) %.2f K, ODE %.2f K\n", rise,
                 chi * work / 383.0, T - 293.15);
-}
-
-// Weldox 460E damage constants of the paper, with copper's strength.
-JohnsonCookDamage weldoxDamage(double d5) {
-    return JohnsonCookDamage{{0.0705, 1.732, -0.54, -0.015, d5}};
 }
 
 TEST(JohnsonCook, DamageReachesOneWhereTheFailureStrainSays) {
