@@ -25,6 +25,12 @@ Simulation::Simulation(Reference ref, std::vector<Material> materialsByBody, Sol
         a = end;
     }
     state_ = State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs()));
+    // Each body starts at its material's room temperature (Johnson–Cook Tr).
+    for (const BodyRange& body : bodies_) {
+        const double T0 = roomTemperature(*body.material, State::kRoomTemperature);
+        for (Index a = body.begin; a < body.end; ++a)
+            state_.temperature[static_cast<std::size_t>(a)] = T0;
+    }
 }
 
 void Simulation::constrain(VelocityConstraint constraint) {

@@ -158,28 +158,12 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
 
     if (const toml::array* materials = arrayOfTables(file, root, "material"))
         for (const toml::node& n : *materials) {
-            TableReader r(file, *n.as_table(), "[[material]]",
-                          {"name", "model", "density", "youngs_modulus", "poisson_ratio"});
-            MaterialSpec m;
-            m.line = r.line();
-            m.name = r.text("name", "", true);
-            m.model = r.text("model", "elastic", false);
-            if (m.model != "elastic")
-                r.fail(n.as_table()->get("model"),
-                       "material model '" + m.model + "' is not known (available: elastic)");
-            const double rho = r.number("density", 0, true, true);
-            const double E = r.number("youngs_modulus", 0, true, true);
-            const double nu = r.number("poisson_ratio", 0, true, false);
-            try {
-                m.elastic = ElasticConstants(rho, E, nu);
-            } catch (const InputError& e) {
-                r.fail(n.as_table()->get("poisson_ratio"),
-                       std::string(e.what()) + " in material '" + m.name + "'");
-            }
+            MaterialSpec m = readMaterialTable(path, *n.as_table());
             for (const MaterialSpec& other : c.materials)
                 if (other.name == m.name)
-                    r.fail(nullptr, "material '" + m.name + "' is defined twice");
-            c.materials.push_back(m);
+                    throw InputError(file + ":" + std::to_string(m.line) + ": material '" + m.name +
+                                     "' is defined twice");
+            c.materials.push_back(std::move(m));
         }
     if (c.materials.empty()) throw InputError(file + ": no [[material]] defined");
 

@@ -10,16 +10,9 @@
 
 #include "core/types.hpp"
 #include "forces/artificial_viscosity.hpp"
-#include "materials/elastic_constants.hpp"
+#include "material_config.hpp"  // MaterialSpec: [[material]] tables and material files
 
 namespace gsph::solver {
-
-struct MaterialSpec {
-    std::string name;
-    std::string model;  ///< "elastic" (hypo-elastic, Jaumann rate)
-    ElasticConstants elastic;
-    int line = 0;
-};
 
 struct BodySpec {
     std::string group;  ///< physical-group name in the particle file, or the body id as text

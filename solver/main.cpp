@@ -2,8 +2,11 @@
 // gsph-solve: runs a case.
 //
 // Usage:   gsph-solve CASE.toml [-o RUNDIR] [--particles FILE] [--threads N]
+//          gsph-solve --material-point MATERIAL.toml --path PATH [-o OUT.csv] [--temperature T]
 // Sample:  gsph-preproc geometries/graded_bar.geo -o run/bar/particles.h5
 //          gsph-solve cases/graded_bar/case.toml -o run/bar
+//          gsph-solve --material-point materials/ofhc_copper.toml
+//                     --path materials/paths/uniaxial_stress_1e3.toml -o copper.csv
 // Description: reads the case file (docs/case-format.md) and the particle file it names, runs
 // the total Lagrangian GSPH solver, and writes snapshot_NNNNNN.h5, history.csv and run.log in
 // RUNDIR (default: run/<case name>). Errors: one line on stderr, exit code 1.
@@ -20,6 +23,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "io/atomic_file.hpp"
+#include "material_point_cli.hpp"
 #include "run.hpp"
 
 namespace {
@@ -52,8 +56,11 @@ int main(int argc, char** argv) {
                    "particle file, instead of the case's [run] particles");
     app.add_option("--threads", threads, "OpenMP threads (default: OMP_NUM_THREADS or all cores)")
         ->check(CLI::Range(1, 1024));
+    gsph::solver::MaterialPointOptions materialPoint;
+    gsph::solver::addMaterialPointOptions(app, materialPoint);
     CLI11_PARSE(app, argc, argv);
     if (threads > 0) omp_set_num_threads(threads);
+    if (materialPoint.requested()) return gsph::solver::runMaterialPoint(materialPoint, runDir);
 
     std::vector<std::string> log;
     gsph::solver::RunOptions options;

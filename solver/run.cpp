@@ -50,7 +50,7 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         const MaterialSpec* m = nullptr;
         for (const MaterialSpec& candidate : c.materials)
             if (candidate.name == spec->material) m = &candidate;
-        setup.materials.emplace_back(HypoElastic(m->elastic));
+        setup.materials.push_back(*m->material);
         setup.density.push_back(m->elastic.density);
         setup.velocity.push_back(spec->velocity);
     }
@@ -83,14 +83,15 @@ class History {
     explicit History(std::filesystem::path path) : path_(std::move(path)) {
         rows_ << "time,step,dt,kinetic_energy,internal_energy,hourglass_work,viscous_work,external_"
                  "work,"
-                 "total_energy,momentum_x,momentum_y,momentum_z\n";
+                 "total_energy,momentum_x,momentum_y,momentum_z,plastic_work,damage_dissipation\n";
     }
     void add(const State& s, const EnergyReport& e) {
         char line[512];
         std::snprintf(line, sizeof line,
-                      "%.9e,%ld,%.6e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n", s.time,
-                      s.step, s.dt, e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
-                      e.boundaryWork, e.total(), e.momentum[0], e.momentum[1], e.momentum[2]);
+                      "%.9e,%ld,%.6e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n",
+                      s.time, s.step, s.dt, e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
+                      e.boundaryWork, e.total(), e.momentum[0], e.momentum[1], e.momentum[2],
+                      e.plasticWork, e.damageDissipation);
         rows_ << line;
     }
     void flush() const {
@@ -205,8 +206,9 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     options.log(line);
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
-                  "external work %.3e J",
-                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork);
+                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J",
+                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork,
+                  e.plasticWork, e.damageDissipation);
     options.log(line);
     return summary;
 }

@@ -2,6 +2,7 @@
 #include "integrator/energy.hpp"
 
 #include <Eigen/LU>
+#include <type_traits>
 
 #include "core/parallel.hpp"
 
@@ -21,10 +22,15 @@ EnergyReport measureEnergy(const Reference& ref, const State& state,
     for (const BodyRange& body : bodies) {
         e.elastic += std::visit(
             [&](const auto& model) {
+                using Model = std::decay_t<decltype(model)>;
                 return deterministicSum(body.end - body.begin, 0.0, [&](Index i) {
                     const auto ia = static_cast<std::size_t>(body.begin + i);
-                    return ref.quadVolume[ia] * state.F[ia].determinant() *
-                           model.storedEnergyDensity(state.cauchy[ia]);
+                    const double J = state.F[ia].determinant();
+                    MaterialPoint point;
+                    point.cauchy = state.cauchy[ia];
+                    point.density = model.elastic().density / J;
+                    if constexpr (Model::kTracksHistory) loadHistory(state, ia, point);
+                    return ref.quadVolume[ia] * J * model.storedEnergyDensity(point);
                 });
             },
             *body.material);
@@ -32,6 +38,8 @@ EnergyReport measureEnergy(const Reference& ref, const State& state,
     e.viscousWork = state.ledger.viscousWork;
     e.hourglassWork = state.ledger.hourglassWork;
     e.boundaryWork = state.ledger.boundaryWork;
+    e.plasticWork = state.ledger.plasticWork;
+    e.damageDissipation = state.ledger.damageDissipation;
     return e;
 }
 

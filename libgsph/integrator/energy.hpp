@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // Energy and momentum of a run, for the history and the conservation tests.
-//   kinetic = Σ ½ m |v|²;  elastic = Σ V_a J_a ψ(σ_a) (ψ: the material's stored energy per
-//   current volume, V_a the quadrature volume of DESIGN §4); the ledger's works (integrated
-//   by the integrator). Balance: kinetic + elastic + viscous + hourglass − boundary = const.
+//   kinetic = Σ ½ m |v|²;  elastic = Σ V_a J_a ψ(σ_a, history_a) (ψ: the material's stored
+//   energy per current volume, V_a the quadrature volume of DESIGN §4); the ledger's works
+//   (integrated by the integrator). Balance:
+//   kinetic + elastic + viscous + hourglass + plastic + damage − boundary = const.
 #pragma once
 
 #include <vector>
@@ -14,12 +15,17 @@ namespace gsph {
 struct EnergyReport {
     double kinetic = 0.0;
     double elastic = 0.0;
-    double viscousWork = 0.0;    ///< energy taken by artificial viscosity
-    double hourglassWork = 0.0;  ///< energy taken by the hourglass control
-    double boundaryWork = 0.0;   ///< work done on the bodies by prescribed velocities
+    double viscousWork = 0.0;        ///< energy taken by artificial viscosity
+    double hourglassWork = 0.0;      ///< energy taken by the hourglass control
+    double boundaryWork = 0.0;       ///< work done on the bodies by prescribed velocities
+    double plasticWork = 0.0;        ///< dissipated by plastic flow
+    double damageDissipation = 0.0;  ///< elastic energy lost by failing particles
     Vec3 momentum = Vec3::Zero();
-    /// Conserved total: kinetic + elastic + viscous + hourglass − boundary.
-    double total() const { return kinetic + elastic + viscousWork + hourglassWork - boundaryWork; }
+    /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage − boundary.
+    double total() const {
+        return kinetic + elastic + viscousWork + hourglassWork + plasticWork + damageDissipation -
+               boundaryWork;
+    }
 };
 
 /// Deterministic (thread-count-independent) sums over every body.

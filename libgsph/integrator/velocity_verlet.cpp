@@ -87,10 +87,19 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
     MaterialPoint point;
     point.cauchy = s.state.cauchy[ia];
-    point.density = model.elastic().density / F.determinant();
+    const double J = F.determinant();
+    point.density = model.elastic().density / J;
+    if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
     model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
     s.state.F[ia] = F;
     s.state.cauchy[ia] = point.cauchy;
+    if constexpr (Model::kTracksHistory) {
+        storeHistory(point, ia, s.state);
+        // Per current volume → per particle: V J (the particle's current volume).
+        const double volume = s.ref.quadVolume[ia] * J;
+        s.work.plasticWork[ia] = volume * point.plasticWork;
+        s.work.damageDissipation[ia] = volume * point.damageDissipation;
+    }
     storeFactors(model, s, ia, F, point);
 }
 
@@ -110,6 +119,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     w.fields.F.set(ia, s.state.F[ia]);
     w.lengthScale[ia] = s.ref.spacing[ia];
     w.failure[ia] = 0;
+    if (!w.plasticWork.empty()) w.plasticWork[ia] = w.damageDissipation[ia] = 0.0;
 }
 
 template <class Model>
@@ -190,6 +200,11 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     for (const BodyRange& body : bodies_)
         work_.blocks.push_back(
             buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
+    for (const BodyRange& body : bodies_)
+        if (tracksHistory(*body.material)) {
+            work_.plasticWork.assign(n, 0.0);
+            work_.damageDissipation.assign(n, 0.0);
+        }
     if (options_.viscosity.enabled()) work_.parts.viscous.assign(n, Vec3::Zero());
     if (options_.hourglass != 0.0) work_.parts.hourglass.assign(n, Vec3::Zero());
 }
@@ -257,6 +272,21 @@ void VelocityVerlet::applyConstraints(State& state, double t) {
             const auto ia = static_cast<std::size_t>(a);
             state.v[ia] = c.at(t, ref_.X[ia]);
         }
+}
+
+// This step's plastic work and failure losses of the bodies with a history, in a fixed order.
+void VelocityVerlet::bookDissipation(State& state) {
+    for (const BodyRange& body : bodies_) {
+        if (!tracksHistory(*body.material)) continue;
+        const auto sumOver = [&](const std::vector<double>& perParticle) {
+            return deterministicSum(
+                body.end - body.begin, 0.0,
+                [&](Index i) { return perParticle[static_cast<std::size_t>(body.begin + i)]; },
+                work_.partialSums);
+        };
+        state.ledger.plasticWork += sumOver(work_.plasticWork);
+        state.ledger.damageDissipation += sumOver(work_.damageDissipation);
+    }
 }
 
 double VelocityVerlet::nonConservativePower(const State& state, const std::vector<Vec3>& part) {
@@ -334,6 +364,7 @@ void VelocityVerlet::step(State& state) {
     state.time += dt;
     const double t1 = omp_get_wtime();
     updateKinematicsAndStress(state, dt, false);
+    bookDissipation(state);
     const double t2 = omp_get_wtime();
     computeAccelerations(state);
     const double t3 = omp_get_wtime();

@@ -3,7 +3,9 @@
 //   1. v_{n+½} = v_n + ½Δt a_n                         (then constraints at t_n + ½Δt)
 //   2. x_{n+1} = x_n + Δt v_{n+½}; bonds stretched to εmax break (failure/brittle_bonds.hpp)
 //   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
-//   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}
+//   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
+//      (Johnson–Cook) also advance ε̄p, T, D, e and book their plastic work and the energy
+//      lost by failing particles in the ledger
 //   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m
 //   6. v_{n+1} = v_{n+½} + ½Δt a_{n+1}                   (then constraints at t_{n+1})
 //   7. Δt_{n+1} = CFL · min_a ℓ_a/(c_a + |v_a|), ℓ_a = current particle spacing
@@ -55,7 +57,10 @@ struct StepWorkspace {
     std::vector<Vec3> force;
     std::vector<double> lengthScale;    ///< current spacing ℓ_a
     std::vector<std::uint8_t> failure;  ///< per particle: why steps 3–4 failed (0: they did not)
-    std::vector<double> partialSums;    ///< scratch of deterministicSum
+    /// Per particle, this step's V J Δw_p and failure loss [J] (sized only when a body's model
+    /// tracks a history; summed into the ledger in a fixed order).
+    std::vector<double> plasticWork, damageDissipation;
+    std::vector<double> partialSums;  ///< scratch of deterministicSum
     void resize(std::size_t n, bool overset = false);
 };
 
@@ -80,6 +85,7 @@ class VelocityVerlet {
     void computeAccelerations(State& state);
     void applyConstraints(State& state, double t);
     double nonConservativePower(const State& state, const std::vector<Vec3>& part);
+    void bookDissipation(State& state);
     double boundaryPower(const State& state) const;
     double stableTimeStep(const State& state) const;
 

@@ -2,11 +2,12 @@
 // Hypo-elastic material with the Jaumann objective rate (DESIGN §5, paper Eq. CauchyTensor):
 //   σ̇ = C : D + W σ − σ W,   C : D = λ tr(D) I + 2G D,   D = sym L, W = skew L, L = Ḟ F^{-1}.
 //
-// The material interface every strength model follows (JohnsonCook extends it in issue #5):
+// The material interface every strength model follows (materials/johnson_cook.hpp too):
+//   static constexpr bool kTracksHistory;                   // reads/writes ε̄p, T, D, e
 //   void update(MaterialPoint&, const Mat3& D, const Mat3& W, double dt) const;
-//   double waveSpeed(const MaterialPoint&) const;        // for the time step and viscosity
-//   double storedEnergyDensity(const Mat3& cauchy) const; // per current volume
-//   const ElasticConstants& elastic() const;
+//   double waveSpeed(const MaterialPoint&) const;           // for the time step and viscosity
+//   double storedEnergyDensity(const MaterialPoint&) const; // per current volume
+//   const ElasticConstants& elastic() const;                // E also scales the hourglass penalty
 // Models are plain values held in a std::variant (materials/material.hpp): no virtual call per
 // particle (style habit 7).
 #pragma once
@@ -15,29 +16,32 @@
 
 #include "core/types.hpp"
 #include "materials/elastic_constants.hpp"
+#include "materials/material_point.hpp"
 
 namespace gsph {
 
-/// What a strength model sees of one particle during a step.
-struct MaterialPoint {
-    Mat3 cauchy = Mat3::Zero();  ///< in: σ_n; out: σ_{n+1} [Pa]
-    double density = 0.0;        ///< current density ρ0/J [kg/m³]
-};
+/// The rotation R = (I − ½ΔtW)^{-1}(I + ½ΔtW) of the incrementally objective Jaumann update
+/// (Hughes & Winget 1980); exactly orthogonal for any Δt.
+inline Mat3 jaumannRotation(const Mat3& W, double dt) {
+    const Mat3 halfSpin = 0.5 * dt * W;
+    return (Mat3::Identity() - halfSpin).inverse() * (Mat3::Identity() + halfSpin);
+}
 
 /// The elastic trial stress of every model, Jaumann rate integrated incrementally objectively
-/// (Hughes & Winget 1980): σ_{n+1} = R σ_n R^T + Δt C : D, R = (I − ½ΔtW)^{-1}(I + ½ΔtW).
+/// (Hughes & Winget 1980): σ_{n+1} = R σ_n R^T + Δt C : D, R = jaumannRotation(W, Δt).
 /// R is exactly orthogonal, so a rigid spin leaves the invariants of σ unchanged to
 /// round-off; to first order in Δt this is σ_n + Δt (C : D + W σ − σ W).
 inline Mat3 jaumannElasticUpdate(const ElasticConstants& e, const Mat3& sigma, const Mat3& D,
                                  const Mat3& W, double dt) {
-    const Mat3 halfSpin = 0.5 * dt * W;
-    const Mat3 R = (Mat3::Identity() - halfSpin).inverse() * (Mat3::Identity() + halfSpin);
+    const Mat3 R = jaumannRotation(W, dt);
     const Mat3 elasticRate = e.lame() * D.trace() * Mat3::Identity() + 2.0 * e.shearModulus() * D;
     return R * sigma * R.transpose() + dt * elasticRate;
 }
 
 class HypoElastic {
   public:
+    static constexpr bool kTracksHistory = false;
+
     explicit HypoElastic(const ElasticConstants& e) : elastic_(e) {}
 
     const ElasticConstants& elastic() const { return elastic_; }
@@ -55,6 +59,9 @@ class HypoElastic {
         const Mat3 s = sigma - p * Mat3::Identity();
         return s.squaredNorm() / (4.0 * elastic_.shearModulus()) +
                p * p / (2.0 * elastic_.bulkModulus());
+    }
+    double storedEnergyDensity(const MaterialPoint& point) const {
+        return storedEnergyDensity(point.cauchy);
     }
 
   private:

@@ -6,14 +6,33 @@
 #include <variant>
 
 #include "materials/hypoelastic.hpp"
+#include "materials/johnson_cook.hpp"
 
 namespace gsph {
 
-using Material = std::variant<HypoElastic>;
+using Material = std::variant<HypoElastic, JohnsonCook>;
 
 inline const ElasticConstants& elasticConstants(const Material& m) {
     return std::visit([](const auto& model) -> const ElasticConstants& { return model.elastic(); },
                       m);
+}
+
+/// True for models that carry a history (plastic strain, temperature, damage, energy).
+inline bool tracksHistory(const Material& m) {
+    return std::visit([](const auto& model) { return model.kTracksHistory; }, m);
+}
+
+/// The temperature a body of this material starts at: the model's room temperature (Johnson–
+/// Cook Tr), or `fallback` for models without one.
+inline double roomTemperature(const Material& m, double fallback) {
+    return std::visit(
+        [&](const auto& model) {
+            if constexpr (requires { model.roomTemperature(); })
+                return model.roomTemperature();
+            else
+                return fallback;
+        },
+        m);
 }
 
 }  // namespace gsph

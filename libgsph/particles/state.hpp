@@ -15,6 +15,9 @@ struct EnergyLedger {
     double viscousWork = 0.0;    ///< dissipated by artificial viscosity (≥ 0)
     double hourglassWork = 0.0;  ///< stored/dissipated by the hourglass control
     double boundaryWork = 0.0;   ///< done on the body by prescribed-velocity particles
+    double plasticWork = 0.0;    ///< dissipated by plastic flow, Σ V J Δw_p (≥ 0)
+    /// Elastic energy the failed particles lost when their damage reached 1 (DESIGN §5).
+    double damageDissipation = 0.0;
     // Powers at the current time, for the trapezoidal rule of the next step [W].
     double viscousPower = 0.0;
     double hourglassPower = 0.0;
@@ -33,6 +36,9 @@ struct State {
     std::vector<double> plasticStrain;  ///< effective plastic strain ε̄p (DESIGN §5)
     std::vector<double> temperature;    ///< [K]
     std::vector<double> damage;         ///< Johnson–Cook damage D ∈ [0, 1]
+    /// Specific internal energy of compression e [J/kg], ∫ −p tr(D)/ρ dt: the energy term of the
+    /// Mie–Grüneisen equation of state (materials/eos.hpp); 0 for models that do not need it.
+    std::vector<double> internalEnergy;
     /// Per pair of Reference::pairs (CSR order): 1 while the bond holds, 0 once broken for good
     /// (DESIGN §5). Both directions (a,b) and (b,a) carry the same value.
     std::vector<std::uint8_t> bondIntact;
@@ -60,6 +66,8 @@ struct State {
         visit("ledger/viscous_work", ledger.viscousWork);
         visit("ledger/hourglass_work", ledger.hourglassWork);
         visit("ledger/boundary_work", ledger.boundaryWork);
+        visit("ledger/plastic_work", ledger.plasticWork);
+        visit("ledger/damage_dissipation", ledger.damageDissipation);
         visit("ledger/viscous_power", ledger.viscousPower);
         visit("ledger/hourglass_power", ledger.hourglassPower);
         visit("ledger/boundary_power", ledger.boundaryPower);
@@ -76,6 +84,7 @@ struct State {
         visit("plastic_strain", s.plasticStrain);
         visit("temperature", s.temperature);
         visit("damage", s.damage);
+        visit("internal_energy", s.internalEnergy);
         visit("bond_intact", s.bondIntact);
     }
 
@@ -95,6 +104,7 @@ struct State {
         s.plasticStrain.assign(n, 0.0);
         s.temperature.assign(n, kRoomTemperature);
         s.damage.assign(n, 0.0);
+        s.internalEnergy.assign(n, 0.0);
         s.bondIntact.assign(pairCount, 1);
         return s;
     }

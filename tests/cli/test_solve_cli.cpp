@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "io/snapshot.hpp"
+#include "support/csv.hpp"
 #include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 
@@ -17,6 +18,7 @@ namespace gsph {
 namespace {
 
 namespace fs = std::filesystem;
+using test::readCsv;
 using test::runCommand;
 using test::TempDir;
 
@@ -51,6 +53,17 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"unknown_table.toml", "unknown table 'walls'", 15},
         {"density_not_a_number.toml", "'density' in [[material]] must be a number", 7},
         {"no_body.toml", "no [[body]] defined", 0},
+        {"unknown_material_model.toml", "material model 'plastic' is not known", 7},
+        {"jc_missing_key.toml", "missing key 'hardening_exponent' in [[material]]", 5},
+        {"jc_melting_below_room.toml", "'melting_temperature' in [[material]] must exceed", 18},
+        {"unknown_eos.toml", "equation of state 'ideal_gas' is not known", 19},
+        {"eos_key_mismatch.toml", "unknown key 'sound_speed' in [[material]] (it belongs to eos",
+         20},
+        {"damage_not_five.toml", "'damage' in [[material]] must be a list of 5 numbers", 19},
+        {"missing_material_file.toml", "material file 'materials/no_such_steel.toml' not found", 7},
+        {"file_and_constants.toml", "unknown key 'density' in [[material]] (a [[material]] with",
+         8},
+        {"negative_bond_stretch.toml", "'bond_stretch' in [[material]] must be ≥ 0", 10},
     };
     std::size_t fixtures = 0;
     for (const auto& e : fs::directory_iterator(kSource / "tests/data/bad_cases"))
@@ -77,22 +90,6 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
     }
 }
 
-std::vector<std::vector<double>> readCsv(const fs::path& path, std::vector<std::string>& header) {
-    std::ifstream in(path);
-    std::string line;
-    std::getline(in, line);
-    std::stringstream hs(line);
-    for (std::string col; std::getline(hs, col, ',');) header.push_back(col);
-    std::vector<std::vector<double>> rows;
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::stringstream ls(line);
-        for (std::string cell; std::getline(ls, cell, ',');) row.push_back(std::stod(cell));
-        rows.push_back(row);
-    }
-    return rows;
-}
-
 TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     TempDir dir;
     makeParticles(dir);
@@ -112,7 +109,9 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     // Energy: the ledger balances the boundary work (the driven face) within 1 %.
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
-    ASSERT_EQ(header.size(), 12u);
+    ASSERT_EQ(header.size(), 14u);
+    EXPECT_EQ(header[12], "plastic_work");
+    EXPECT_EQ(header[13], "damage_dissipation");
     ASSERT_EQ(rows.size(), 11u);
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -

@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// Johnson–Cook ductile damage (DESIGN §5, the paper's damage model; Johnson & Cook 1985):
+//   D = Σ Δε̄p / εf,   εf = [D1 + D2 exp(D3 σ*)] [1 + ε̇*]^D4 [1 + D5 T*],
+// σ* = σ_m/σ_eq the stress triaxiality (σ_m = −p the mean stress), ε̇* = ε̇/ε̇0 and T* the
+// homologous temperature of the strength model. The rate term is the paper's power form
+// (Børvik et al.); Johnson & Cook's original 1 + D4 ln ε̇* agrees with it to first order in
+// D4 ln ε̇*. The strength model accumulates D and couples it to the yield stress, (1 − D)σy;
+// a point with D ≥ 1 has failed: no deviatoric stress and no tension (materials/johnson_cook.hpp).
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace gsph {
+
+struct JohnsonCookDamage {
+    std::array<double, 5> D = {0.0, 0.0, 0.0, 0.0, 0.0};  ///< D1 … D5
+
+    /// εf at triaxiality σ*, strain-rate ratio ε̇* = ε̇/ε̇0 and homologous temperature T*.
+    /// May be ≤ 0 for constants with D1 < 0 at high triaxiality: the point then fails at once.
+    double failureStrain(double triaxiality, double rateRatio, double homologousTemperature) const {
+        return (D[0] + D[1] * std::exp(D[2] * triaxiality)) * std::pow(1.0 + rateRatio, D[3]) *
+               (1.0 + D[4] * homologousTemperature);
+    }
+
+    /// Damage after a plastic increment dEps (≥ 0); 1 once the point has failed.
+    double accumulate(double damage, double dEps, double failureStrainValue) const {
+        if (dEps <= 0.0) return damage;
+        if (!(failureStrainValue > 0.0)) return 1.0;
+        return std::min(1.0, damage + dEps / failureStrainValue);
+    }
+};
+
+}  // namespace gsph

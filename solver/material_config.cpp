@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: MIT
+#include "material_config.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+#include "core/error.hpp"
+#include "toml_keys.hpp"
+
+namespace gsph::solver {
+namespace {
+
+using Sign = TomlKeys::Sign;
+using Keys = std::vector<std::string>;
+
+// Keys every model takes; `notes` and `sources` document a material (the library's files cite
+// a source for every constant) and have no effect on the run.
+const Keys kCommonKeys = {"model",        "density", "youngs_modulus", "poisson_ratio",
+                          "bond_stretch", "notes",   "sources"};
+const Keys kJohnsonCookKeys = {"yield_stress",
+                               "hardening_modulus",
+                               "hardening_exponent",
+                               "strain_rate_coefficient",
+                               "reference_strain_rate",
+                               "thermal_softening_exponent",
+                               "room_temperature",
+                               "melting_temperature",
+                               "specific_heat",
+                               "taylor_quinney",
+                               "strain_rate_form",
+                               "damage",
+                               "eos"};
+const Keys kLinearEosKeys = {"bulk_modulus"};
+const Keys kMieGruneisenKeys = {"sound_speed", "hugoniot_slope", "gruneisen_gamma"};
+
+std::string shortNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
+
+bool contains(const Keys& keys, const std::string& key) {
+    return std::find(keys.begin(), keys.end(), key) != keys.end();
+}
+
+Keys operator+(Keys a, const Keys& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+// Where a key that the chosen model or equation of state does not take belongs instead.
+std::string belongsTo(const std::string& key) {
+    if (contains(kJohnsonCookKeys, key)) return "(it belongs to model = \"johnson_cook\")";
+    if (contains(kLinearEosKeys, key)) return "(it belongs to eos = \"linear\")";
+    if (contains(kMieGruneisenKeys, key)) return "(it belongs to eos = \"mie_gruneisen\")";
+    return "";
+}
+
+// `sources` is a table of citations, one per constant the material sets.
+void checkSources(const TomlKeys& keys, const toml::table& table, const Keys& constants) {
+    const toml::node* node = table.get("sources");
+    if (!node) return;
+    const toml::table* sources = node->as_table();
+    if (!sources)
+        keys.fail("sources", "'sources' must be a table: constant = \"where it comes from\"");
+    for (const auto& [k, v] : *sources) {
+        const std::string key(k.str());
+        const std::optional<std::string> text = v.value<std::string>();
+        if (!contains(constants, key) || !text || text->empty())
+            throw InputError(keys.file() + ":" + std::to_string(v.source().begin.line) +
+                             ": sources." + key +
+                             " must cite a constant of this material "
+                             "with a non-empty string");
+    }
+}
+
+JohnsonCookParams readJohnsonCook(const TomlKeys& keys, const std::string& where) {
+    JohnsonCookParams p;
+    p.yieldStress = keys.number("yield_stress", Sign::NonNegative);
+    p.hardeningModulus = keys.number("hardening_modulus", Sign::NonNegative);
+    p.hardeningExponent = keys.number("hardening_exponent", Sign::Positive);
+    p.strainRateCoefficient = keys.number("strain_rate_coefficient", Sign::NonNegative);
+    p.referenceStrainRate = keys.number("reference_strain_rate", Sign::Positive);
+    p.thermalSofteningExponent = keys.number("thermal_softening_exponent", Sign::Positive);
+    p.roomTemperature = keys.number("room_temperature", p.roomTemperature, Sign::Positive);
+    p.meltingTemperature = keys.number("melting_temperature", Sign::Positive);
+    if (!(p.meltingTemperature > p.roomTemperature))
+        keys.fail("melting_temperature", "'melting_temperature' in " + where +
+                                             " must exceed room_temperature (" +
+                                             shortNumber(p.roomTemperature) + " K)");
+    p.specificHeat = keys.number("specific_heat", Sign::Positive);
+    p.taylorQuinney = keys.number("taylor_quinney", p.taylorQuinney, Sign::NonNegative);
+    if (p.taylorQuinney > 1.0)
+        keys.fail("taylor_quinney", "'taylor_quinney' in " + where + " must lie in [0, 1]");
+    const std::string form = keys.text("strain_rate_form", "log");
+    if (form != "log" && form != "power")
+        keys.fail("strain_rate_form", "'strain_rate_form' in " + where +
+                                          " must be \"log\" (1 + C ln ε̇*) or \"power\" "
+                                          "((1 + ε̇*)^C), got \"" +
+                                          form + "\"");
+    p.rateForm = form == "power" ? StrainRateForm::Power : StrainRateForm::Logarithmic;
+    return p;
+}
+
+// The constants of one material, from an inline [[material]] table or a material file.
+void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& extraKeys,
+                   const std::string& where, MaterialSpec& m) {
+    m.model = keys.text("model", "elastic");
+    if (m.model != "elastic" && m.model != "johnson_cook")
+        keys.fail("model", "material model '" + m.model +
+                               "' is not known (available: elastic, johnson_cook)");
+    const bool plastic = m.model == "johnson_cook";
+    const std::string eos = plastic ? keys.text("eos", "linear") : "";
+    if (plastic && eos != "linear" && eos != "mie_gruneisen")
+        keys.fail("eos", "equation of state '" + eos +
+                             "' is not known (available: linear, mie_gruneisen)");
+    const Keys constants =
+        kCommonKeys +
+        (plastic ? kJohnsonCookKeys + (eos == "linear" ? kLinearEosKeys : kMieGruneisenKeys)
+                 : Keys{});
+    keys.rejectUnknown(constants + extraKeys, belongsTo);
+    checkSources(keys, table, constants);
+    if (keys.has("notes")) keys.text("notes", "");
+
+    const double rho = keys.number("density", Sign::Positive);
+    const double E = keys.number("youngs_modulus", Sign::Positive);
+    const double nu = keys.number("poisson_ratio", Sign::Any);
+    try {
+        m.elastic = ElasticConstants(rho, E, nu);
+    } catch (const InputError& e) {
+        keys.fail("poisson_ratio", std::string(e.what()) + " in material '" + m.name + "'");
+    }
+    m.bondStretch = keys.number("bond_stretch", 0.0, Sign::NonNegative);
+    if (!plastic) {
+        m.material = HypoElastic(m.elastic);
+        return;
+    }
+    const JohnsonCookParams params = readJohnsonCook(keys, where);
+    std::optional<JohnsonCookDamage> damage;
+    if (keys.has("damage")) {
+        const std::vector<double> d = keys.numbers("damage", 5);
+        damage = JohnsonCookDamage{{d[0], d[1], d[2], d[3], d[4]}};
+    }
+    try {
+        const EquationOfState state =
+            eos == "linear"
+                ? EquationOfState::linear(
+                      rho, keys.number("bulk_modulus", m.elastic.bulkModulus(), Sign::Positive))
+                : EquationOfState::mieGruneisen(
+                      rho, {keys.number("sound_speed", Sign::Positive),
+                            keys.number("hugoniot_slope", Sign::NonNegative),
+                            keys.number("gruneisen_gamma", Sign::NonNegative)});
+        m.material = JohnsonCook(m.elastic, params, state, damage);
+    } catch (const InputError& e) {
+        keys.fail("", std::string(e.what()) + " in material '" + m.name + "'");
+    }
+}
+
+}  // namespace
+
+std::filesystem::path materialLibraryFolder() {
+    if (const char* env = std::getenv("GSPH_MATERIALS_DIR"); env && *env) return env;
+    return GSPH_MATERIALS_DIR;
+}
+
+std::filesystem::path resolveMaterialFile(const std::filesystem::path& caseFolder,
+                                          const std::string& file,
+                                          std::vector<std::filesystem::path>* tried) {
+    namespace fs = std::filesystem;
+    const fs::path given(file);
+    std::vector<fs::path> candidates;
+    if (given.is_absolute()) {
+        candidates.push_back(given);
+    } else {
+        candidates.push_back(caseFolder / given);
+        const fs::path library = materialLibraryFolder();
+        candidates.push_back(library / given);
+        if (!given.empty() && *given.begin() == "materials")
+            candidates.push_back(library / given.lexically_relative("materials"));
+    }
+    for (const fs::path& c : candidates)
+        if (fs::is_regular_file(c)) return c;
+    if (tried) *tried = candidates;
+    return {};
+}
+
+MaterialSpec readMaterialFile(const std::filesystem::path& path) {
+    const std::string file = path.string();
+    if (!std::filesystem::is_regular_file(path)) throw InputError(file + ": no such material file");
+    const toml::table root = parseTomlFile(file);
+    MaterialSpec m;
+    m.name = path.stem().string();
+    m.file = path;
+    m.line = 1;
+    const std::string where = "material '" + m.name + "'";
+    readConstants(TomlKeys(file, root, where), root, {}, where, m);
+    return m;
+}
+
+MaterialSpec readMaterialTable(const std::filesystem::path& caseFile, const toml::table& table) {
+    const TomlKeys keys(caseFile.string(), table, "[[material]]");
+    if (!keys.has("name")) keys.fail("", "missing key 'name' in [[material]]");
+    MaterialSpec m;
+    m.line = keys.line();
+    m.name = keys.text("name", "");
+    if (!keys.has("file")) {
+        readConstants(keys, table, {"name"}, "[[material]]", m);
+        return m;
+    }
+    keys.rejectUnknown({"name", "file"}, [](const std::string&) {
+        return "(a [[material]] with 'file' takes every constant from that file)";
+    });
+    const std::string file = keys.text("file", "");
+    std::vector<std::filesystem::path> tried;
+    const std::filesystem::path path = resolveMaterialFile(caseFile.parent_path(), file, &tried);
+    if (path.empty()) {
+        std::string looked;
+        for (const auto& t : tried) looked += (looked.empty() ? "" : ", ") + t.string();
+        keys.fail("file", "material file '" + file + "' not found (looked for " + looked + ")");
+    }
+    MaterialSpec fromFile = readMaterialFile(path);
+    fromFile.name = m.name;
+    fromFile.line = m.line;
+    return fromFile;
+}
+
+}  // namespace gsph::solver

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: MIT
+// Typed reading of one TOML table with "FILE:LINE: what" errors (InputError), for the material
+// tables and files (material_config.*) and the material-point path files
+// (material_point_cli.*). Keys are checked against the allowed set first, so a misspelt key is
+// reported as unknown, never as the "missing" key of its correct spelling.
+#pragma once
+
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+
+namespace gsph::solver {
+
+/// Parses a TOML file; a syntax error becomes InputError "FILE:LINE: what".
+inline toml::table parseTomlFile(const std::string& file) {
+    try {
+        return toml::parse_file(file);
+    } catch (const toml::parse_error& e) {
+        throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " +
+                         std::string(e.description()));
+    }
+}
+
+class TomlKeys {
+  public:
+    enum class Sign { Any, Positive, NonNegative };
+
+    TomlKeys(std::string file, const toml::table& table, std::string where)
+        : file_(std::move(file)), table_(table), where_(std::move(where)) {}
+
+    const std::string& file() const { return file_; }
+    int line() const { return static_cast<int>(table_.source().begin.line); }
+    bool has(const std::string& key) const { return table_.get(key) != nullptr; }
+
+    /// Throws "FILE:LINE: what", LINE of `key` (of the table when key is empty or absent).
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+        const toml::node* n = key.empty() ? nullptr : table_.get(key);
+        const int at = n ? static_cast<int>(n->source().begin.line) : line();
+        throw InputError(file_ + ":" + std::to_string(at) + ": " + what);
+    }
+
+    /// Every key must be in `allowed`; `hint(key)` may explain where an unknown key belongs.
+    void rejectUnknown(const std::vector<std::string>& allowed,
+                       const std::function<std::string(const std::string&)>& hint = {}) const {
+        for (const auto& [k, node] : table_) {
+            const std::string key(k.str());
+            bool known = false;
+            for (const std::string& a : allowed) known = known || a == key;
+            if (known) continue;
+            const std::string extra = hint ? hint(key) : std::string();
+            fail(key,
+                 "unknown key '" + key + "' in " + where_ + (extra.empty() ? "" : " ") + extra);
+        }
+    }
+
+    double number(const std::string& key, Sign sign) const {
+        if (!has(key)) fail("", "missing key '" + key + "' in " + where_);
+        return checked(key, sign);
+    }
+    double number(const std::string& key, double fallback, Sign sign) const {
+        return has(key) ? checked(key, sign) : fallback;
+    }
+
+    long integer(const std::string& key, long fallback, long minimum) const {
+        const toml::node* n = table_.get(key);
+        if (!n) return fallback;
+        const std::optional<std::int64_t> v =
+            n->is_integer() ? n->value<std::int64_t>() : std::optional<std::int64_t>();
+        if (!v) fail(key, "'" + key + "' in " + where_ + " must be an integer");
+        if (*v < minimum)
+            fail(key, "'" + key + "' in " + where_ + " must be ≥ " + std::to_string(minimum));
+        return static_cast<long>(*v);
+    }
+
+    std::string text(const std::string& key, const std::string& fallback) const {
+        const toml::node* n = table_.get(key);
+        if (!n) return fallback;
+        const std::optional<std::string> v = n->value<std::string>();
+        if (!v || v->empty())
+            fail(key, "'" + key + "' in " + where_ + " must be a non-empty string");
+        return *v;
+    }
+
+    /// A list of exactly `size` numbers.
+    std::vector<double> numbers(const std::string& key, std::size_t size) const {
+        const toml::node* n = table_.get(key);
+        const toml::array* arr = n ? n->as_array() : nullptr;
+        const std::string what = "'" + key + "' in " + where_ + " must be a list of " +
+                                 std::to_string(size) + " numbers";
+        if (!arr || arr->size() != size) fail(key, what);
+        std::vector<double> out;
+        for (const toml::node& e : *arr) {
+            const std::optional<double> v = e.value<double>();
+            if (!v || !std::isfinite(*v)) fail(key, what);
+            out.push_back(*v);
+        }
+        return out;
+    }
+
+  private:
+    double checked(const std::string& key, Sign sign) const {
+        const std::optional<double> v = table_.get(key)->value<double>();
+        if (!v || !std::isfinite(*v)) fail(key, "'" + key + "' in " + where_ + " must be a number");
+        if (sign == Sign::Positive && !(*v > 0.0))
+            fail(key, "'" + key + "' in " + where_ + " must be > 0");
+        if (sign == Sign::NonNegative && *v < 0.0)
+            fail(key, "'" + key + "' in " + where_ + " must be ≥ 0");
+        return *v;
+    }
+
+    std::string file_;
+    const toml::table& table_;
+    std::string where_;
+};
+
+}  // namespace gsph::solver

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: MIT
+// The material library (materials/*.toml), material files in case files, and
+// `gsph-solve --material-point` as a user runs it: every library file parses and cites a source
+// for every constant; a driven copper point follows the Johnson–Cook closed form through the
+// CSV; bad material and path files get one-line FILE:LINE messages.
+#include <gtest/gtest.h>
+#include <toml++/toml.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "case_config.hpp"
+#include "core/error.hpp"
+#include "support/csv.hpp"
+#include "support/sample_run.hpp"
+#include "tools/temp_dir.hpp"
+
+namespace gsph {
+namespace {
+
+namespace fs = std::filesystem;
+using test::readCsv;
+using test::runCommand;
+using test::TempDir;
+
+const std::string kSolve = GSPH_SOLVE_EXE;
+const fs::path kLibrary = test::kSourceDir / "materials";
+
+void write(const fs::path& path, const std::string& text) {
+    std::ofstream(path) << text;
+}
+
+TEST(MaterialLibrary, EveryFileParsesAndCitesASourceForEveryConstant) {
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(kLibrary)) {
+        if (entry.path().extension() != ".toml") continue;
+        ++files;
+        const solver::MaterialSpec m = solver::readMaterialFile(entry.path());
+        ASSERT_TRUE(m.material.has_value()) << entry.path();
+        const toml::table root = toml::parse_file(entry.path().string());
+        const toml::table* sources = root["sources"].as_table();
+        ASSERT_NE(sources, nullptr) << entry.path() << " has no [sources]";
+        for (const auto& [key, node] : root) {
+            const std::string k(key.str());
+            if (k == "model" || k == "eos" || k == "notes" || k == "sources") continue;
+            const std::optional<std::string> source = (*sources)[k].value<std::string>();
+            EXPECT_TRUE(source && !source->empty()) << entry.path() << ": no source for " << k;
+        }
+    }
+    EXPECT_EQ(files, 5) << "copper, Weldox 460E, Armco iron, 6061-T6, PMMA";
+}
+
+TEST(MaterialLibrary, FilesHoldTheIssueConstants) {
+    const solver::MaterialSpec cu = solver::readMaterialFile(kLibrary / "ofhc_copper.toml");
+    const auto& copper = std::get<JohnsonCook>(*cu.material);
+    EXPECT_EQ(copper.params().yieldStress, 90e6);
+    EXPECT_EQ(copper.params().hardeningModulus, 292e6);
+    EXPECT_EQ(copper.params().hardeningExponent, 0.31);
+    EXPECT_EQ(copper.params().strainRateCoefficient, 0.025);
+    EXPECT_EQ(copper.params().thermalSofteningExponent, 1.09);
+    EXPECT_EQ(copper.params().meltingTemperature, 1356.0);
+    EXPECT_EQ(cu.elastic.density, 8960.0);
+    EXPECT_EQ(cu.elastic.youngsModulus, 124e9);
+    EXPECT_EQ(copper.eos().kind(), EquationOfState::Kind::MieGruneisen);
+
+    const solver::MaterialSpec w = solver::readMaterialFile(kLibrary / "weldox_460e.toml");
+    const auto& weldox = std::get<JohnsonCook>(*w.material);
+    ASSERT_TRUE(weldox.damage().has_value());
+    const std::array<double, 5> paper = {0.0705, 1.732, -0.54, -0.015, 0.0};
+    EXPECT_EQ(weldox.damage()->D, paper);
+    std::ifstream in(kLibrary / "weldox_460e.toml");
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_NE(text.find("-0.0123"), std::string::npos) << "both D4 values are recorded";
+
+    const solver::MaterialSpec pmma = solver::readMaterialFile(kLibrary / "pmma.toml");
+    EXPECT_EQ(pmma.model, "elastic");
+    EXPECT_EQ(pmma.bondStretch, 0.03);
+}
+
+TEST(MaterialLibrary, CaseFilesFindMaterialFilesNextToThemThenInTheLibrary) {
+    TempDir dir;
+    const std::string body =
+        "[run]\nparticles = \"p.h5\"\nend_time = 1e-6\n\n[[material]]\nname = \"cu\"\nfile = "
+        "\"FILE\"\n\n[[body]]\ngroup = \"0\"\nmaterial = \"cu\"\n";
+    const auto caseWith = [&](const std::string& file) {
+        std::string text = body;
+        text.replace(text.find("FILE"), 4, file);
+        write(dir / "case.toml", text);
+        return solver::readCaseFile(dir / "case.toml");
+    };
+    for (const std::string file : {"materials/ofhc_copper.toml", "ofhc_copper.toml"}) {
+        const solver::CaseConfig c = caseWith(file);
+        EXPECT_EQ(c.materials[0].name, "cu");
+        EXPECT_EQ(fs::canonical(c.materials[0].file), fs::canonical(kLibrary / "ofhc_copper.toml"));
+    }
+    // A file next to the case wins over the library.
+    fs::create_directories(dir / "materials");
+    fs::copy_file(kLibrary / "armco_iron.toml", dir / "materials/ofhc_copper.toml");
+    EXPECT_EQ(fs::canonical(caseWith("materials/ofhc_copper.toml").materials[0].file),
+              fs::canonical(dir / "materials/ofhc_copper.toml"));
+}
+
+TEST(MaterialLibrary, BadMaterialFilesNameTheirLine) {
+    TempDir dir;
+    std::ifstream in(kLibrary / "ofhc_copper.toml");
+    std::string copper((std::istreambuf_iterator<char>(in)), {});
+    const auto expectError = [&](const std::string& text, const std::string& where,
+                                 const std::string& what) {
+        write(dir / "bad.toml", text);
+        try {
+            solver::readMaterialFile(dir / "bad.toml");
+            ADD_FAILURE() << "accepted: " << what;
+        } catch (const InputError& e) {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find((dir / "bad.toml").string() + ":" + where), std::string::npos)
+                << msg;
+            EXPECT_NE(msg.find(what), std::string::npos) << msg;
+        }
+    };
+    std::string typo = copper;
+    typo.replace(typo.find("yield_stress"), 12, "yeild_stress");
+    expectError(typo, "8:", "unknown key 'yeild_stress' in material 'bad'");
+    std::string negative = copper;
+    negative.replace(negative.find("0.31 "), 4, "-0.3");
+    expectError(negative, "10:", "'hardening_exponent' in material 'bad' must be > 0");
+    std::string uncited = copper;
+    const std::string cited = "\nspecific_heat = \"J";  // the source line, not the constant
+    uncited.replace(uncited.find(cited), cited.size(), "\nspecfic_heat = \"J");
+    expectError(uncited, "", "sources.specfic_heat must cite a constant of this material");
+}
+
+TEST(MaterialPointCli, CopperInUniaxialStressFollowsTheClosedForm) {
+    // materials/paths/uniaxial_stress_600K.toml: 1/s, from 600 K, adiabatic; σ_xx against
+    // (A + B ε̄p^n)(1 − T*^m) at each row's ε̄p and T (rate term 1 at ε̇ = ε̇0), within 0.5 %.
+    TempDir dir;
+    const auto r =
+        runCommand(kSolve + " --material-point " + (kLibrary / "ofhc_copper.toml").string() +
+                   " --path " + (kLibrary / "paths/uniaxial_stress_600K.toml").string() + " -o " +
+                   (dir / "cu.csv").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("101 rows"), std::string::npos) << r.out;
+    std::vector<std::string> header;
+    const auto rows = readCsv(dir / "cu.csv", header);
+    const std::vector<std::string> expected = {
+        "time",           "strain",      "sigma_xx", "sigma_yy",    "sigma_zz",
+        "sigma_xy",       "sigma_yz",    "sigma_zx", "pressure",    "von_mises",
+        "plastic_strain", "temperature", "damage",   "plastic_work"};
+    ASSERT_EQ(header, expected);
+    ASSERT_EQ(rows.size(), 101u);
+    EXPECT_NEAR(rows.front()[11], 600.0, 1e-9);
+    EXPECT_NEAR(rows.back()[1], 0.3, 1e-12);
+    int checked = 0;
+    for (const auto& row : rows) {
+        if (row[10] < 0.02) continue;
+        const double Tstar = (row[11] - 293.15) / (1356.0 - 293.15);
+        const double sigma = (90e6 + 292e6 * std::pow(row[10], 0.31)) * (1 - std::pow(Tstar, 1.09));
+        EXPECT_NEAR(row[2] / sigma, 1.0, 0.005) << "ε̄p " << row[10];
+        EXPECT_LT(std::abs(row[3]), 1e-3 * row[2]) << "lateral stress vanishes";
+        ++checked;
+    }
+    EXPECT_GT(checked, 90);
+    EXPECT_GT(rows.back()[11], 600.0) << "adiabatic heating";
+}
+
+TEST(MaterialPointCli, BadPathFilesGetOneLineMessages) {
+    TempDir dir;
+    const std::string material = (kLibrary / "ofhc_copper.toml").string();
+    struct Bad {
+        const char* name;
+        const char* text;
+        const char* message;
+    };
+    const std::vector<Bad> cases = {
+        {"typo.toml", "loading = \"uniaxial_stress\"\nstrain_rate = 1.0\nfinal_strian = 0.1\n",
+         "typo.toml:3: unknown key 'final_strian' in the path"},
+        {"kind.toml", "loading = \"tension\"\nstrain_rate = 1.0\nfinal_strain = 0.1\n",
+         "kind.toml:1: 'loading' must be"},
+        {"sign.toml", "loading = \"simple_shear\"\nstrain_rate = 1.0\nfinal_strain = -0.1\n",
+         "sign.toml:3: 'final_strain' must be non-zero, with the sign of strain_rate"},
+        {"short.csv",
+         "time,F_xx,F_xy,F_xz,F_yx,F_yy,F_yz,F_zx,F_zy,F_zz\n0,1,0,0,0,1,0,0,0,1\n1,1,0\n",
+         "short.csv:3: expected 10 numbers"},
+        {"start.csv", "0,2,0,0,0,1,0,0,0,1\n1,2,0,0,0,1,0,0,0,1\n",
+         "start.csv: the first F of a path must be the identity"},
+        {"path.txt", "loading = \"simple_shear\"\n", "a path file is .toml"},
+    };
+    for (const Bad& c : cases) {
+        write(dir / c.name, c.text);
+        const auto r = runCommand(kSolve + " --material-point " + material + " --path " +
+                                  (dir / c.name).string());
+        EXPECT_EQ(r.status, 1) << c.name;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.name << ": " << r.err;
+        EXPECT_NE(r.err.find(c.message), std::string::npos) << c.name << ": " << r.err;
+        EXPECT_TRUE(r.out.empty()) << c.name;
+    }
+    // --path is required with --material-point, and a case file excludes it.
+    EXPECT_NE(runCommand(kSolve + " --material-point " + material).status, 0);
+    EXPECT_NE(runCommand(kSolve).status, 0);
+}
+
+}  // namespace
+}  // namespace gsph

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// Energy bookkeeping with Johnson–Cook plasticity (issue #5): kinetic + elastic + plastic work
+// + damage dissipation + the ledger's viscous and hourglass works − boundary work stays equal
+// to its initial value within 1 % of the energy that moved.
+//   * PlasticImpact: a short copper bar (10 × 2 × 2 mm, 25 × 5 × 5 particles) at 150 m/s
+//     against a rigid support (its end layer fixed), heating on, until most of its kinetic
+//     energy has gone into plastic work.
+//   * DuctileTension: a steel bar pulled apart at both ends until particles fail (Johnson–Cook
+//     damage), so the failure loss enters the balance too.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "simulation.hpp"
+#include "spaces/analytic_maps.hpp"
+#include "support/johnson_cook_materials.hpp"
+
+namespace gsph {
+namespace {
+
+std::vector<Index> particlesWhere(const Reference& ref, const std::function<bool(const Vec3&)>& f) {
+    std::vector<Index> out;
+    for (Index a = 0; a < ref.size(); ++a)
+        if (f(ref.X[static_cast<std::size_t>(a)])) out.push_back(a);
+    return out;
+}
+
+TEST(PlasticEnergy, PlasticImpactOnARigidSupportBalancesItsEnergy) {
+    const double length = 0.01, width = 0.002, v0 = 150.0, spacing = length / 25;
+    SolverOptions options;
+    options.viscosity = {1.0, 1.0};
+    options.hourglass = 0.1;
+    Simulation sim(
+        latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 8960.0, 1.2),
+        {testing::withLinearEos(testing::kCopperElastic, testing::copperParams())}, options);
+    sim.constrain({"support",
+                   particlesWhere(sim.reference(), [&](const Vec3& X) { return X[0] < spacing; }),
+                   {}});
+    sim.setVelocity([&](const Vec3&) { return Vec3(-v0, 0.0, 0.0); });
+    sim.start();
+    const EnergyReport e0 = sim.energy();
+    EXPECT_NEAR(sim.state().temperature.front(), 293.15, 1e-12) << "starts at the material's Tr";
+    double worst = 0.0;
+    EnergyReport e = e0;
+    for (int k = 1; k <= 40 && e.kinetic > 0.05 * e0.kinetic; ++k) {
+        sim.advanceTo(k * 1e-6);
+        e = sim.energy();
+        worst = std::max(worst, std::abs(e.total() - e0.total()) / e0.kinetic);
+    }
+    std::printf(
+        "[plastic impact] t = %.1f µs: kinetic %.3f J of %.3f J, elastic %.3f, plastic "
+        "%.3f, viscous %.3f, hourglass %.4f J; worst imbalance %.2e of the initial kinetic "
+        "energy; max ε̄p %.2f, max T %.0f K\n",
+        sim.state().time * 1e6, e.kinetic, e0.kinetic, e.elastic, e.plasticWork, e.viscousWork,
+        e.hourglassWork, worst,
+        *std::max_element(sim.state().plasticStrain.begin(), sim.state().plasticStrain.end()),
+        *std::max_element(sim.state().temperature.begin(), sim.state().temperature.end()));
+    EXPECT_LT(e.kinetic, 0.2 * e0.kinetic) << "most kinetic energy is gone";
+    // With the default viscosity (β1 = β2 = 1) the shock at the support takes about half of
+    // it (measured: 49 %; 22 % with β = (0.2, 0.4), 0 without): plastic work is the other half.
+    EXPECT_GT(e.plasticWork, 0.4 * e0.kinetic);
+    EXPECT_LT(worst, 0.01);
+    EXPECT_EQ(e.damageDissipation, 0.0);
+    // The plastic work heated the bar: Σ m Cp ΔT = χ × plastic work (χ = 0.9).
+    double heat = 0.0;
+    for (Index a = 0; a < sim.reference().size(); ++a) {
+        const auto ia = static_cast<std::size_t>(a);
+        heat += sim.reference().mass[ia] * 383.0 * (sim.state().temperature[ia] - 293.15);
+    }
+    EXPECT_NEAR(heat / (0.9 * e.plasticWork), 1.0, 1e-6);
+}
+
+TEST(PlasticEnergy, DuctileTensionToFailureBalancesItsEnergy) {
+    // Weldox 460E strength (Børvik et al. 2001) with damage constants scaled down so that the
+    // bar fails within a short pull (εf ≈ 0.15 at σ* = 1/3); ends pulled apart at ±20 m/s.
+    const JohnsonCook steel =
+        testing::withLinearEos(testing::kWeldoxElastic, testing::weldoxParams(),
+                               JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}});
+    const double length = 0.01, width = 0.002, spacing = length / 25, v = 20.0;
+    SolverOptions options;
+    options.viscosity = {1.0, 1.0};
+    options.hourglass = 0.1;
+    Simulation sim(
+        latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 7850.0, 1.2),
+        {steel}, options);
+    const Reference& ref = sim.reference();
+    sim.constrain({"left", particlesWhere(ref, [&](const Vec3& X) { return X[0] < spacing; }),
+                   [&](double, const Vec3&) { return Vec3(-v, 0, 0); }});
+    sim.constrain({"right",
+                   particlesWhere(ref, [&](const Vec3& X) { return X[0] > length - spacing; }),
+                   [&](double, const Vec3&) { return Vec3(v, 0, 0); }});
+    sim.setVelocity([&](const Vec3& X) { return Vec3(v * (2 * X[0] / length - 1), 0, 0); });
+    sim.start();
+    const EnergyReport e0 = sim.energy();
+    double worst = 0.0, scale = e0.kinetic;
+    EnergyReport e1 = e0;
+    int failed = 0;
+    for (int k = 1; k <= 60 && failed == 0; ++k) {
+        sim.advanceTo(k * 1e-6);
+        e1 = sim.energy();
+        scale = std::max({scale, e1.boundaryWork, e0.kinetic});
+        worst = std::max(worst, std::abs(e1.total() - e0.total()));
+        failed =
+            static_cast<int>(std::count_if(sim.state().damage.begin(), sim.state().damage.end(),
+                                           [](double d) { return d >= 1.0; }));
+    }
+    // A few more µs after the first failure, so the failed particles unload.
+    for (int k = 1; k <= 3; ++k) {
+        sim.advanceTo(sim.state().time + 1e-6);
+        e1 = sim.energy();
+        scale = std::max(scale, e1.boundaryWork);
+        worst = std::max(worst, std::abs(e1.total() - e0.total()));
+    }
+    failed = static_cast<int>(std::count_if(sim.state().damage.begin(), sim.state().damage.end(),
+                                            [](double d) { return d >= 1.0; }));
+    std::printf(
+        "[ductile tension] t = %.1f µs: %d failed particles; boundary work %.3f J, "
+        "kinetic %.3f, elastic %.3f, plastic %.3f, damage %.4f, viscous %.3f, hourglass "
+        "%.4f J; worst imbalance %.2e of the energy moved\n",
+        sim.state().time * 1e6, failed, e1.boundaryWork, e1.kinetic, e1.elastic, e1.plasticWork,
+        e1.damageDissipation, e1.viscousWork, e1.hourglassWork, worst / scale);
+    EXPECT_GT(failed, 0);
+    EXPECT_GT(e1.damageDissipation, 0.0);
+    EXPECT_LT(worst, 0.01 * scale);
+}
+
+}  // namespace
+}  // namespace gsph
