@@ -2,6 +2,7 @@
 #include "conversion.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <map>
 
 #include "block_indexing.hpp"
@@ -9,6 +10,7 @@
 #include "hex_geometry.hpp"
 #include "hex_topology.hpp"
 #include "space_gluing.hpp"
+#include "space_map.hpp"
 
 namespace gsph::preproc {
 
@@ -61,6 +63,31 @@ std::vector<Index> assignBodies(const HexMesh& mesh, std::vector<BodyInfo>& bodi
     return bodyOfVolume;
 }
 
+std::string point(const Vec3& X) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", X[0], X[1], X[2]);
+    return text;
+}
+
+/// A hex with an edge collapsed to a point: its block collapses onto a line or a point, as a
+/// cylindrical index space does on its axis (DESIGN §6: cover the axis with a Cartesian core).
+void checkCollapsedEdges(const HexMesh& mesh, const HexVolume& v, Index h, const HexCorners& x) {
+    const auto edges = edgeLengthRange(x);
+    for (int c = 0; c < 8; ++c) {
+        for (int a = 0; a < 3; ++a) {
+            const int d = c | (1 << a);
+            if (d == c || (x[d] - x[c]).norm() > 1e-12 * edges[1]) continue;
+            throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
+                            " in volume " + std::to_string(v.tag) + " is degenerate: its edge at " +
+                            point(x[c]) +
+                            " has zero length, so the block collapses onto a line or point "
+                            "there, like a cylindrical space on its axis, where dX/dtheta is "
+                            "singular; cover the axis with a Cartesian core block (an O-grid, "
+                            "as in geometries/taylor_bar.geo)");
+        }
+    }
+}
+
 /// Every hex must have a positive Jacobian at its corners in its own (gmsh) node order.
 void checkElementOrientation(const HexMesh& mesh) {
     for (const HexVolume& v : mesh.volumes) {
@@ -68,6 +95,7 @@ void checkElementOrientation(const HexMesh& mesh) {
             HexCorners x;
             for (int c = 0; c < 8; ++c) x[c] = mesh.nodes[mesh.hexes[h][kGmshCorner[c]]];
             if (!(minCornerJacobian(x) > 0.0)) {
+                checkCollapsedEdges(mesh, v, h, x);  // a collapsed edge has its own message
                 throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
                                 " in volume " + std::to_string(v.tag) +
                                 " is inverted or degenerate (its Jacobian is not positive at "
@@ -97,14 +125,16 @@ void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
                 throw MeshError(mesh.source + ": physical surface '" + name +
                                 "' has a quadrilateral that is not a face of any hexahedron");
             }
-            for (int k = 0; k < std::min(n, 2); ++k) members.push_back(particleOfHex[found[k]]);
+            for (int k = 0; k < std::min(n, 2); ++k) {
+                if (particleOfHex[found[k]] >= 0) members.push_back(particleOfHex[found[k]]);
+            }
         }
         std::sort(members.begin(), members.end());
         members.erase(std::unique(members.begin(), members.end()), members.end());
         if (members.empty()) {
             out.warnings.push_back("particle set '" + name +
-                                   "' is empty (its surfaces hold no "
-                                   "quadrilaterals)");
+                                   "' is empty (its surfaces hold no quadrilaterals, or hole "
+                                   "cutting removed all its particles)");
         }
     }
 }
@@ -114,7 +144,22 @@ struct Assembly {
     Conversion& out;
     std::vector<Index> particleOfHex;  // per hex
     std::vector<char> filled;          // per particle slot
+    std::vector<double> condition;     // per particle: cond(∂X/∂θ) at its centre
+    std::vector<double> inPlane;       // the same without the one-layer axis (1 if none)
+    std::vector<double> cornerRatio;   // smallest det ∂X/∂θ at a corner / det at the centre
 };
+
+/// The index along which a space is one cell thick (a 2-D slab), or −1.
+int oneLayerAxis(const Int3& cells) {
+    int axis = -1, thin = 0;
+    for (int d = 0; d < 3; ++d) {
+        if (cells[d] == 1) {
+            axis = d;
+            ++thin;
+        }
+    }
+    return thin == 1 ? axis : -1;
+}
 
 constexpr double kDtheta = 1.0;  // DESIGN §2: Δθ = 1 in every space
 
@@ -132,7 +177,8 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                     x[c] = mesh.nodes[block.node(i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))];
                 }
                 const Index h = block.hex(i, j, k);
-                if (!(minCornerJacobian(x) > 0.0)) {
+                const double cornerJacobian = minCornerJacobian(x);
+                if (!(cornerJacobian > 0.0)) {
                     throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
                                     " in volume " + std::to_string(block.volumeTag) +
                                     " is inverted (the structured grid folds there)");
@@ -144,6 +190,14 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                 if (as.filled[a]++ != 0) {
                     throw MeshError(mesh.source + ": internal error: two hexahedra at one cell");
                 }
+                // Condition of ∂X/∂θ at the centre (the block frame's columns are the
+                // space's up to order and sign, which the singular values ignore).
+                const Mat3 J = hexJacobian(x, Vec3::Zero());
+                const int thin = oneLayerAxis(space.cells);
+                as.condition[a] = jacobianCondition(J);
+                as.inPlane[a] =
+                    thin < 0 ? 1.0 : jacobianCondition(J, space.toSpace[entry].R.perm[thin]);
+                as.cornerRatio[a] = cornerJacobian / J.determinant();
                 pf.X[a] = hexCentre(x);
                 pf.volume[a] = hexVolume(x);
                 pf.theta[a] = Vec3(c[0] + 0.5, c[1] + 0.5, c[2] + 0.5) * kDtheta;
@@ -160,9 +214,107 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
     }
 }
 
+/// Drops the particles with keep = 0 from every per-particle array; renumbers particleOfHex
+/// (−1 for a cut hex).
+void compact(const std::vector<char>& keep, Assembly& as) {
+    ParticleFile& pf = as.out.particles;
+    std::vector<Index> newIndex(keep.size(), -1);
+    Index kept = 0;
+    for (std::size_t a = 0; a < keep.size(); ++a) {
+        if (keep[a]) newIndex[a] = kept++;
+    }
+    auto squeeze = [&](auto& values) {
+        std::size_t w = 0;
+        for (std::size_t a = 0; a < keep.size(); ++a) {
+            if (keep[a]) values[w++] = values[a];
+        }
+        values.resize(w);
+    };
+    squeeze(pf.X);
+    squeeze(pf.theta);
+    squeeze(pf.volume);
+    squeeze(pf.space);
+    squeeze(pf.body);
+    squeeze(pf.latticeIndex);
+    squeeze(as.out.elementOfParticle);
+    squeeze(as.condition);
+    squeeze(as.inPlane);
+    squeeze(as.cornerRatio);
+    for (Index& p : as.particleOfHex) {
+        if (p >= 0) p = newIndex[static_cast<std::size_t>(p)];
+    }
+}
+
+/// DESIGN §6: in bodies of several spaces, cut holes where spaces overlap, then find the
+/// transient particles. Every body gets its flags (all 0 in a body of one space).
+void applyOverset(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
+                  const GluingResult& glued, const ConversionOptions& options, Assembly& as) {
+    ParticleFile& pf = as.out.particles;
+    ConversionStats& stats = as.out.stats;
+    const SpaceRanking ranking =
+        rankSpaces(mesh.source, mesh, blocks, glued, pf, options.priorities);
+    std::vector<int> spacesOfBody(pf.bodies.size(), 0);
+    for (const GluedSpace& s : glued.spaces) ++spacesOfBody[static_cast<std::size_t>(s.body)];
+    SpaceMaps maps(glued.spaces.size());
+    for (std::size_t s = 0; s < glued.spaces.size(); ++s) {
+        if (spacesOfBody[static_cast<std::size_t>(glued.spaces[s].body)] < 2) continue;
+        maps[s] =
+            std::make_unique<SpaceMap>(mesh, blocks, glued.spaces[s], 2.0 * options.oversetKappa);
+    }
+    compact(cutHoles(mesh.source, pf, maps, ranking, stats.spaceVolumes, stats.cuts), as);
+    stats.oversetKappa = options.oversetKappa;
+    findTransients(mesh.source, pf, maps, options.oversetKappa, stats.transients);
+}
+
+/// Worst condition number of ∂X/∂θ and smallest corner/centre Jacobian ratio per space; a
+/// warning where either says the space is close to singular.
+void reportMetric(const Assembly& as, Conversion& out) {
+    const ParticleFile& pf = out.particles;
+    out.stats.metric.assign(pf.spaces.size(), MetricReport{});
+    for (std::size_t s = 0; s < pf.spaces.size(); ++s) {
+        out.stats.metric[s].oneLayerAxis = oneLayerAxis(pf.spaces[s].cells);
+    }
+    for (Index a = 0; a < pf.size(); ++a) {
+        MetricReport& m = out.stats.metric[static_cast<std::size_t>(pf.space[a])];
+        const bool thin = m.oneLayerAxis >= 0;
+        if ((thin ? as.inPlane[a] : as.condition[a]) > (thin ? m.inPlaneCondition : m.condition)) {
+            m.worstParticle = a;
+        }
+        m.condition = std::max(m.condition, as.condition[a]);
+        m.inPlaneCondition = std::max(m.inPlaneCondition, as.inPlane[a]);
+        if (as.cornerRatio[a] < m.cornerRatio) {
+            m.cornerRatio = as.cornerRatio[a];
+            m.worstCornerParticle = a;
+        }
+    }
+    const std::string advice =
+        ": is the space close to a coordinate axis? Cover the axis with a Cartesian core block "
+        "(an O-grid, as in geometries/taylor_bar.geo)";
+    for (std::size_t s = 0; s < pf.spaces.size(); ++s) {
+        const MetricReport& m = out.stats.metric[s];
+        const double worst = m.oneLayerAxis < 0 ? m.condition : m.inPlaneCondition;
+        char text[160];
+        if (!(worst <= kIllConditioned)) {
+            std::snprintf(text, sizeof text, "condition number %.3g > %g", worst, kIllConditioned);
+            out.warnings.push_back("space " + std::to_string(s) +
+                                   ": dX/dtheta is ill-conditioned (" + text + " at particle " +
+                                   std::to_string(m.worstParticle) +
+                                   ", X = " + point(pf.X[m.worstParticle]) + ")" + advice);
+        }
+        if (!(m.cornerRatio >= kCollapsingCell)) {
+            std::snprintf(text, sizeof text, "det dX/dtheta at a corner is %.3g of its centre's",
+                          m.cornerRatio);
+            out.warnings.push_back("space " + std::to_string(s) + ": the cell of particle " +
+                                   std::to_string(m.worstCornerParticle) +
+                                   " (X = " + point(pf.X[m.worstCornerParticle]) +
+                                   ") nearly collapses onto a line (" + text + ")" + advice);
+        }
+    }
+}
+
 }  // namespace
 
-Conversion convertHexMesh(const HexMesh& mesh) {
+Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options) {
     if (mesh.hexes.empty()) {
         throw MeshError(mesh.source + ": the mesh has no hexahedra (nothing to convert)");
     }
@@ -187,7 +339,18 @@ Conversion convertHexMesh(const HexMesh& mesh) {
     out.elementOfParticle.resize(n);
     out.stats.hexes = n;
     out.stats.minEdge = INFINITY;
-    Assembly as{out, std::vector<Index>(n, -1), std::vector<char>(n, 0)};
+    if (!(options.oversetKappa > 0.0 && options.oversetKappa <= kMaxOversetKappa)) {
+        char text[96];
+        std::snprintf(text, sizeof text, "the overset kappa must lie in (0, %g] (got %g)",
+                      kMaxOversetKappa, options.oversetKappa);
+        throw InputError(mesh.source + ": " + text);
+    }
+    Assembly as{out,
+                std::vector<Index>(n, -1),
+                std::vector<char>(n, 0),
+                std::vector<double>(n),
+                std::vector<double>(n),
+                std::vector<double>(n)};
     std::size_t offset = 0;  // spaces follow each other: sorted by body, then first volume
     for (std::size_t s = 0; s < glued.spaces.size(); ++s) {
         const GluedSpace& space = glued.spaces[s];
@@ -213,7 +376,9 @@ Conversion convertHexMesh(const HexMesh& mesh) {
                                " search steps: the spaces are consistent but may not be the "
                                "fewest possible");
     }
+    applyOverset(mesh, blocks, glued, options, as);
     buildSets(mesh, adjacency, as.particleOfHex, out);
+    reportMetric(as, out);
     return out;
 }
 

@@ -3,11 +3,13 @@
 
 #include <gmsh.h>
 #include <omp.h>
+#include <Eigen/Geometry>
 
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <numeric>
@@ -206,6 +208,48 @@ void appendElements(const std::string& source, const std::vector<std::size_t>& n
     }
 }
 
+/// gmsh turns the hexahedra of a structured block that collapse onto a line into prisms (a
+/// rectangle revolved about an axis it touches, a 3-corner transfinite surface extruded). When
+/// prisms come with hexahedra and the nodes only prisms have lie on one line, that line is the
+/// axis of a cylindrical space: this says so; otherwise it returns "".
+std::string collapsedAxisNote(const std::vector<int>& types,
+                              const std::vector<std::vector<std::size_t>>& nodeTags,
+                              const NodeIds& ids, const std::vector<Vec3>& nodes) {
+    constexpr int kPrism6 = 6;
+    std::vector<Index> hexNodes, prismNodes;
+    for (std::size_t t = 0; t < types.size(); ++t) {
+        std::vector<Index>& to = types[t] == kHex8 ? hexNodes : prismNodes;
+        if (types[t] != kHex8 && types[t] != kPrism6) continue;
+        for (std::size_t tag : nodeTags[t]) to.push_back(ids(tag));
+    }
+    std::sort(hexNodes.begin(), hexNodes.end());
+    std::sort(prismNodes.begin(), prismNodes.end());
+    prismNodes.erase(std::unique(prismNodes.begin(), prismNodes.end()), prismNodes.end());
+    std::vector<Vec3> axis;
+    for (Index n : prismNodes) {
+        if (n >= 0 && !std::binary_search(hexNodes.begin(), hexNodes.end(), n)) {
+            axis.push_back(nodes[static_cast<std::size_t>(n)]);
+        }
+    }
+    if (hexNodes.empty() || axis.empty()) return "";
+    auto farthest = [&](const Vec3& from) {
+        return *std::max_element(axis.begin(), axis.end(), [&](const Vec3& a, const Vec3& b) {
+            return (a - from).squaredNorm() < (b - from).squaredNorm();
+        });
+    };
+    const Vec3 a = farthest(axis.front()), b = farthest(a);
+    const double length = (b - a).norm();
+    for (const Vec3& x : axis) {
+        if (length > 0.0 && ((x - a).cross(b - a)).norm() > 1e-9 * length * length) return "";
+    }
+    char where[160];
+    std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g) to (%.6g, %.6g, %.6g)", a[0], a[1], a[2],
+                  b[0], b[1], b[2]);
+    return std::string(": the block collapses onto the line from ") + where +
+           ", like a single cylindrical space on its axis, where dX/dtheta is singular; cover the "
+           "axis with a Cartesian core block (an O-grid, as in geometries/taylor_bar.geo)";
+}
+
 void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
     gmsh::vectorpair entities;
     gmsh::model::getEntities(entities, 3);
@@ -225,11 +269,13 @@ void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
             others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
         }
         if (!others.empty()) {
+            const std::string axis = collapsedAxisNote(types, nodeTags, ids, mesh.nodes);
             throw MeshError(
                 source + ": volume " + std::to_string(tag) + " holds " + others +
                 (hexes > 0 ? " besides " + std::to_string(hexes) + " 8-node hexahedra" : "") +
-                "; gsph-preproc needs structured blocks of 8-node hexahedra "
-                "(Transfinite Volume + Recombine)");
+                (axis.empty() ? "; gsph-preproc needs structured blocks of 8-node hexahedra "
+                                "(Transfinite Volume + Recombine)"
+                              : axis));
         }
         if (hexes == 0) continue;
         HexVolume volume{tag, static_cast<Index>(mesh.hexes.size()), static_cast<Index>(hexes)};

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "hex_geometry.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -11,6 +12,34 @@ Vec3 hexCentre(const HexCorners& x) {
     Vec3 sum = Vec3::Zero();
     for (const Vec3& c : x) sum += c;
     return sum / 8.0;
+}
+
+Vec3 hexPoint(const HexCorners& x, const Vec3& xi) {
+    Vec3 sum = Vec3::Zero();
+    for (int c = 0; c < 8; ++c) {
+        double N = 1.0;
+        for (int a = 0; a < 3; ++a) N *= 0.5 * (1.0 + ((c >> a & 1) ? xi[a] : -xi[a]));
+        sum += N * x[static_cast<std::size_t>(c)];
+    }
+    return sum;
+}
+
+double jacobianCondition(const Mat3& J, int skipAxis) {
+    // σ² are the eigenvalues of the Gram matrix JᵀJ (3×3, or 2×2 without one column).
+    double lo = 0.0, hi = 0.0;
+    if (skipAxis < 0) {
+        Eigen::SelfAdjointEigenSolver<Mat3> eigen;
+        eigen.computeDirect(J.transpose() * J, Eigen::EigenvaluesOnly);
+        lo = eigen.eigenvalues()[0];
+        hi = eigen.eigenvalues()[2];
+    } else {
+        const Vec3 a = J.col((skipAxis + 1) % 3), b = J.col((skipAxis + 2) % 3);
+        const double p = a.squaredNorm(), q = b.squaredNorm(), r = a.dot(b);
+        const double mean = 0.5 * (p + q), radius = std::hypot(0.5 * (p - q), r);
+        lo = mean - radius;
+        hi = mean + radius;
+    }
+    return lo > 0.0 ? std::sqrt(hi / lo) : INFINITY;
 }
 
 Mat3 hexJacobian(const HexCorners& x, const Vec3& xi) {

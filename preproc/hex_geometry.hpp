@@ -19,6 +19,13 @@ using HexCorners = std::array<Vec3, 8>;
 /// X(ξ = 0): the particle position of DESIGN §2 (the parametric centre of the hex).
 Vec3 hexCentre(const HexCorners& x);
 
+/// X(ξ) = Σ_c N_c(ξ) X_c; ξ may lie outside [−1,1]³ (the hex's polynomial, extended).
+Vec3 hexPoint(const HexCorners& x, const Vec3& xi);
+
+/// Condition number σmax/σmin of J = ∂X/∂ξ (∞ if J is singular); with `skipAxis` in 0..2, of
+/// the 3×2 matrix of the other two columns (the in-plane metric of a one-layer slab).
+double jacobianCondition(const Mat3& J, int skipAxis = -1);
+
 /// ∂X/∂ξ at ξ ∈ [−1,1]³ (columns: derivatives along ξ1, ξ2, ξ3).
 Mat3 hexJacobian(const HexCorners& x, const Vec3& xi);
 

@@ -76,6 +76,44 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
         }
         out << "  sets       " << sets << "\n";
     }
+    for (std::size_t s = 0; s < stats.metric.size(); ++s) {
+        const MetricReport& m = stats.metric[s];
+        const std::string plane = m.oneLayerAxis < 0
+                                      ? ""
+                                      : format(" (in-plane %.3f: one cell along %c)",
+                                               m.inPlaneCondition, "ijk"[m.oneLayerAxis]);
+        out << format(
+            "  metric     space %-3zu worst cond(dX/dtheta) %.3f%s, det at cell corners >= %.3f of "
+            "centre\n",
+            s, m.condition, plane.c_str(), m.cornerRatio);
+    }
+    if (!stats.transients.empty()) {
+        out << format(
+            "  overset    kappa %.3g: a particle within 2 kappa dtheta = %.3g dtheta of another "
+            "space's particles is transient there\n",
+            stats.oversetKappa, 2.0 * stats.oversetKappa);
+    }
+    for (const HoleCutReport& c : stats.cuts) {
+        if (c.particles == 0 && c.doubleCounted == 0.0) {
+            out << format("  cut        space %d by space %d: none (they do not overlap)\n",
+                          c.space, c.by);
+            continue;
+        }
+        out << format(
+            "  cut        space %d by space %d: %ld particles (%.6e m^3); gap %.3e m^3, "
+            "double-counted %.3e m^3\n",
+            c.space, c.by, c.particles, c.volume, c.gap, c.doubleCounted);
+    }
+    for (const TransientReport& tr : stats.transients) {
+        out << format(
+            "  transient  space %d in space %d: %ld particles, extrapolated up to %.3f dtheta past "
+            "space %d's lattice%s\n",
+            tr.space, tr.in, tr.particles, tr.maxExtrapolation, tr.in,
+            tr.ambiguous == 0
+                ? ""
+                : format(" (%ld reached by two extensions: the nearer kept)", tr.ambiguous)
+                      .c_str());
+    }
     out << format("  gluing     %d of %d shared block faces lie inside a space%s\n",
                   stats.honouredFaces, stats.sharedFaces,
                   stats.exhaustiveGluing ? "" : " (search stopped early)");

@@ -35,7 +35,8 @@ void validateSpaces(const ParticleFile& f) {
     }
 }
 
-void validateOrdering(const ParticleFile& f) {
+/// Checks the per-particle arrays; returns the body of each space (−1 if it has no particle).
+std::vector<Index> validateOrdering(const ParticleFile& f) {
     const auto n = static_cast<std::size_t>(f.size());
     const auto spaces = static_cast<Index>(f.spaces.size());
     const auto bodies = static_cast<Index>(f.bodies.size());
@@ -69,6 +70,54 @@ void validateOrdering(const ParticleFile& f) {
             }
         }
     }
+    return bodyOfSpace;
+}
+
+/// The overset entries and the transient flags (DESIGN §6; docs/formats.md).
+void validateOverset(const ParticleFile& f, const std::vector<Index>& bodyOfSpace) {
+    const OversetEntries& o = f.overset;
+    const std::size_t m = o.size(), n = f.X.size();
+    if (o.space.size() != m || o.theta.size() != m || o.omega.size() != m) {
+        invalid("overset arrays differ in length");
+    }
+    if (f.transient.empty()) {
+        if (m != 0) invalid("overset entries without /particles/transient flags");
+        return;
+    }
+    if (f.transient.size() != n) invalid("transient flags have the wrong length");
+    if (!(o.kappa > 0.0) || !std::isfinite(o.kappa)) invalid("overset kappa must be positive");
+    std::vector<std::int8_t> hasEntry(n, 0);
+    for (std::size_t e = 0; e < m; ++e) {
+        const std::string entry = "overset entry " + std::to_string(e);
+        const Index a = o.particle[e], s = o.space[e];
+        if (a < 0 || static_cast<std::size_t>(a) >= n) invalid(entry + ": particle out of range");
+        if (s < 0 || static_cast<std::size_t>(s) >= f.spaces.size()) {
+            invalid(entry + ": space out of range");
+        }
+        if (s == f.space[a]) invalid(entry + ": the particle's own home space");
+        if (bodyOfSpace[s] != f.body[a]) invalid(entry + ": a space of another body");
+        if (e > 0 && (s < o.space[e - 1] || (s == o.space[e - 1] && a <= o.particle[e - 1]))) {
+            invalid(entry + ": entries are not sorted by (space, particle) and unique");
+        }
+        if (!(o.omega[e] > 0.0) || !std::isfinite(o.omega[e])) {
+            invalid(entry + ": omega is not positive and finite");
+        }
+        const LatticeSpace& sp = f.spaces[s];
+        const double reach = 2.0 * o.kappa * sp.dtheta;  // the selection radius 2κΔθ
+        for (std::size_t d = 0; d < 3; ++d) {
+            const double t = o.theta[e][d], extent = sp.cells[d] * sp.dtheta;
+            if (!std::isfinite(t) || t < -reach || t > extent + reach) {
+                invalid(entry + ": theta is not finite or lies beyond 2 kappa dtheta of space " +
+                        std::to_string(s));
+            }
+        }
+        hasEntry[a] = 1;
+    }
+    if (hasEntry != f.transient) {
+        invalid(
+            "transient flags do not match the overset entries (1 exactly for the particles "
+            "that have an entry)");
+    }
 }
 
 }  // namespace
@@ -82,7 +131,8 @@ void validateParticleFile(const ParticleFile& f) {
         invalid("lattice_index has the wrong length");
     }
     validateSpaces(f);
-    validateOrdering(f);
+    const std::vector<Index> bodyOfSpace = validateOrdering(f);
+    validateOverset(f, bodyOfSpace);
     for (const auto& [name, members] : f.sets) {
         if (!validSetName(name)) invalid("set name '" + name + "' is not a valid HDF5 name");
         for (std::size_t k = 0; k < members.size(); ++k) {
@@ -95,6 +145,23 @@ void validateParticleFile(const ParticleFile& f) {
         }
     }
 }
+
+namespace {
+
+void writeOverset(h5::File& h5, const ParticleFile& f) {
+    const OversetEntries& o = f.overset;
+    const std::size_t m = o.size();
+    h5.write("/particles/transient", f.transient.data(), {f.transient.size()});
+    h5.createGroup("/overset");
+    h5.write("/overset/particle", o.particle.data(), {m});
+    h5.write("/overset/space", o.space.data(), {m});
+    h5.write("/overset/theta", o.theta.empty() ? nullptr : o.theta.front().data(), {m, 3});
+    h5.setAttribute("/overset/theta", "units", std::string("1"));
+    h5.write("/overset/omega", o.omega.data(), {m});
+    h5.write("/overset/kappa", &o.kappa, {1});
+}
+
+}  // namespace
 
 void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f) {
     validateParticleFile(f);
@@ -147,6 +214,7 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f)
         for (const auto& [name, members] : f.sets) {
             h5.write("/sets/" + name, members.data(), {members.size()});
         }
+        if (!f.transient.empty()) writeOverset(h5, f);
     });
 }
 
@@ -199,6 +267,23 @@ void checkFormat(const h5::File& h5) {
                       "reads " +
                       std::to_string(kParticleFormatMajor) + ".x)");
     }
+}
+
+/// /particles/transient and /overset (format 1.1); a 1.0 file has neither.
+void readOverset(const h5::File& h5, ParticleFile& f) {
+    const std::size_t n = f.X.size();
+    if (h5.exists("/particles/transient")) {
+        f.transient = readColumn<std::int8_t>(h5, "/particles/transient", n);
+    }
+    if (!h5.exists("/overset")) return;
+    std::vector<std::size_t> dims;
+    OversetEntries& o = f.overset;
+    o.particle = h5.read<std::int32_t>("/overset/particle", dims);
+    const std::size_t m = expectShape(h5, "/overset/particle", dims, 0);
+    o.space = readColumn<std::int32_t>(h5, "/overset/space", m);
+    o.theta = readVec3(h5, "/overset/theta", m);
+    o.omega = readColumn<double>(h5, "/overset/omega", m);
+    o.kappa = readColumn<double>(h5, "/overset/kappa", 1)[0];
 }
 
 }  // namespace
@@ -262,6 +347,8 @@ ParticleFile readParticleFile(const std::filesystem::path& path) {
         }
     }
 
+    readOverset(h5, f);
+
     try {
         validateParticleFile(f);
     } catch (const InputError& e) {
@@ -293,6 +380,16 @@ Reference buildReference(const ParticleFile& f, std::span<const double> densityP
     ref.volume = f.volume;
     ref.body = f.body;
     ref.space = f.space;
+    ref.overset.resize(f.overset.size());
+    for (std::size_t e = 0; e < f.overset.size(); ++e)
+        ref.overset[e] = {f.overset.particle[e], f.overset.space[e], f.overset.theta[e],
+                          f.overset.omega[e]};
+    ref.oversetKappa = f.overset.kappa;
+    if (!ref.overset.empty() && kappa > ref.oversetKappa)
+        throw InputError("kernel factor κ = " + std::to_string(kappa) +
+                         " exceeds the κ = " + std::to_string(ref.oversetKappa) +
+                         " the particle file's overset entries were made for (re-run gsph-preproc "
+                         "with --overset-kappa ≥ κ)");
     ref.density.resize(f.volume.size());
     for (std::size_t a = 0; a < f.volume.size(); ++a) {
         ref.density[a] = densityPerBody[static_cast<std::size_t>(f.body[a])];

@@ -1,13 +1,18 @@
 // SPDX-License-Identifier: MIT
 // The particle file (DESIGN §1, §2): what gsph-preproc writes and gsph-solve reads. HDF5,
-// format "gsph-particles" 1.0, layout in docs/formats.md.
+// format "gsph-particles" 1.1, layout in docs/formats.md (1.1 added /overset and
+// /particles/transient; 1.0 files still read, without transient particles).
 //
 // Invariants (checked by validateParticleFile, on write and on read):
 //   * every per-particle array has N entries (latticeIndex: N or none);
 //   * particles are sorted by body, then by space: bodies and spaces are contiguous ranges, and
 //     each space belongs to one body;
 //   * space ids index `spaces`, body ids index `bodies`, set entries are sorted particle indices;
-//   * volumes are positive; lattice indices lie inside their space's cells.
+//   * volumes are positive; lattice indices lie inside their space's cells;
+//   * overset entries (DESIGN §6) are sorted by (space, particle), unique, name an existing
+//     particle and another space of its body, carry finite θ within 2·kappa·Δθ of that space's
+//     lattice and a positive finite ω; `transient` (N entries, or none when there are no
+//     entries) is 1 exactly for the particles that have an entry.
 // Ownership: plain values; writeParticleFile writes atomically (io/atomic_file.hpp).
 #pragma once
 
@@ -26,7 +31,7 @@ namespace gsph {
 
 inline constexpr const char* kParticleFormat = "gsph-particles";
 inline constexpr int kParticleFormatMajor = 1;  ///< readers reject another major version
-inline constexpr int kParticleFormatMinor = 0;  ///< additions that old readers may ignore
+inline constexpr int kParticleFormatMinor = 1;  ///< additions that old readers may ignore
 
 /// One body: a gmsh physical volume group (or the whole mesh when there is none).
 struct BodyInfo {
@@ -42,6 +47,10 @@ struct ParticleFile {
     std::vector<Index> space;                        ///< home space id
     std::vector<Index> body;                         ///< body id
     std::vector<std::array<Index, 3>> latticeIndex;  ///< (i,j,k) in the home space; optional
+    /// 1 if the particle is transient (has an overset entry), else 0; N entries, or none for a
+    /// file without overset data (format 1.0).
+    std::vector<std::int8_t> transient;
+    OversetEntries overset;  ///< θ of transient particles in other spaces (DESIGN §6)
 
     std::vector<LatticeSpace> spaces;                ///< per space: cells, periodic flags, Δθ
     std::vector<BodyInfo> bodies;                    ///< per body id
@@ -63,8 +72,9 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& fi
 ParticleFile readParticleFile(const std::filesystem::path& path);
 
 /// The reference configuration of a run from a particle file: X, θ, volume, body, space,
-/// spaces, dim = 3, κ, and ρ0 per particle. Derived fields (pairs, metrics, mass) are filled by
-/// buildPairs and computeGeometry (mass = ρ0 ω det M: docs/theory.md).
+/// spaces, overset entries (copied as they are), dim = 3, κ, and ρ0 per particle. Derived fields
+/// (pairs, metrics, mass) are filled by buildPairs and computeGeometry (mass = ρ0 ω det M:
+/// docs/theory.md).
 /// @param[in] densityPerBody ρ0 [kg/m³] indexed by body id; needs one entry per body.
 /// @param[in] kappa h = κΔθ (DESIGN §3).
 /// Throws InputError if a density is missing or not positive, or κ is not positive.

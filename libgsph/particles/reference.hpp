@@ -42,6 +42,22 @@ struct OversetEntry {
     double omega = 0.0;         ///< θ-volume in that space: V / det(∂X/∂θ_space) (DESIGN §3)
 };
 
+/// Transient particles (DESIGN §6), as gsph-preproc stores them (docs/formats.md, /overset):
+/// entry e says that particle `particle[e]` also has coordinates `theta[e]` in space `space[e]`
+/// (never its home space, always a space of its body) with θ-volume `omega[e]` = V / det(∂X/∂θ)
+/// of that space at the particle. Entries are sorted by (space, particle), one per pair; they
+/// hold every particle within 2·kappa·Δθ of a home particle of the other space, so a run with
+/// κ ≤ kappa finds all it needs here (and must itself drop the entries beyond its own 2κΔθ).
+struct OversetEntries {
+    std::vector<Index> particle;  ///< particle index
+    std::vector<Index> space;     ///< the other space s
+    std::vector<Vec3> theta;      ///< θ in space s [θ units]
+    std::vector<double> omega;    ///< θ-volume in space s [θ units³]
+    double kappa = 0.0;           ///< the κ the entries were selected with (0: none stored)
+
+    std::size_t size() const { return particle.size(); }
+};
+
 struct Reference {
     Dimension dim;
     double kappa = 1.2;  ///< h = κΔθ (DESIGN §3)
@@ -55,6 +71,9 @@ struct Reference {
     std::vector<Index> body;      ///< body id; particles sorted by it
     std::vector<Index> space;     ///< home space id
     std::vector<OversetEntry> overset;  ///< transient coordinates (empty: one space per body)
+    /// κ the overset entries were selected with (gsph-preproc --overset-kappa; 0: not stored).
+    /// A run needs κ ≤ this, or pairs near an interface would be missing.
+    double oversetKappa = 0.0;
 
     // Derived once (computeGeometry).
     std::vector<double> omega;  ///< θ-volume ω = Δθ^d (DESIGN §3; folded into pairs.table)

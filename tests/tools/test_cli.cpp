@@ -92,6 +92,29 @@ TEST(PreprocCli, OutputReadableByH5py) {
               "7680 [[0, 0, 0], [0, 1, 0]] [[8, 8, 40], [4, 32, 40]] 192 ['rod'] SI\n");
 }
 
+TEST(PreprocCli, OversetSummaryAndFile) {
+    test::TempDir dir;
+    const auto output = dir / "blocks.h5";
+    const ProcessResult r =
+        preproc(quote(source("geometries/two_blocks.geo")) + " -o " + quote(output.string()) +
+                " --set overlap=2 --set plane=1 --overset-kappa 1.2");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    for (const char* expected :
+         {"particles  152 in 2 spaces, 1 body, from 160 hexahedra",
+          "metric     space 0   worst cond(dX/dtheta) 1.000 (in-plane 1.000: one cell along k)",
+          "overset    kappa 1.2", "cut        space 0 by space 1: 8 particles",
+          "gap 0.000e+00 m^3, double-counted 0.000e+00 m^3",
+          "transient  space 1 in space 0: ", "transient  space 0 in space 1: 4 particles"}) {
+        EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
+    }
+    const ParticleFile f = readParticleFile(output);
+    EXPECT_EQ(f.size(), 152);
+    EXPECT_EQ(f.overset.kappa, 1.2);
+    EXPECT_EQ(f.transient.size(), 152u);
+    EXPECT_GT(f.overset.size(), 0u);
+}
+
 /// A failing run: status 1, nothing on stdout, one line on stderr that names `file` and holds
 /// `fault`, and no file in the output folder (an existing output stays as it was).
 void expectCleanFailure(const std::string& args, const std::string& file,
@@ -126,6 +149,7 @@ TEST(PreprocCli, BadInputsFailCleanly) {
         {"no_volume.geo", "no hexahedra"},
         {"ungrouped_volume.geo", "no physical volume group"},
         {"bad_transfinite.geo", "cannot mesh it"},
+        {"cylinder_single_space.geo", "collapses onto the line"},
     };
     for (const Case& c : cases) {
         const std::string path = source("tests/data/") + c.file;
@@ -141,6 +165,15 @@ TEST(PreprocCli, BadOptionsFailCleanly) {
     expectCleanFailure(quote(msh) + " --set refine=2", msh, ".geo files only");
     const std::string text = source("tests/data/README.md");
     expectCleanFailure(quote(text), text, "expected a .geo or .msh file");
+    const std::string blocks = source("geometries/two_blocks.geo");
+    expectCleanFailure(quote(blocks) + " --priority core", "--priority core", "VOLUME=N");
+    expectCleanFailure(quote(blocks) + " --priority 2=x", "--priority 2=x", "VOLUME=N");
+    expectCleanFailure(quote(blocks) + " --priority core=2", blocks,
+                       "no physical volume group named 'core'");
+    expectCleanFailure(quote(blocks) + " --priority 1=1 --priority plate=2", blocks,
+                       "conflicting priorities");
+    expectCleanFailure(quote(blocks) + " --overset-kappa 0", blocks, "overset kappa");
+    expectCleanFailure(quote(blocks) + " --set overlap=8", blocks, "lies entirely inside");
 }
 
 TEST(PreprocCli, UnwritableOutputFailsCleanly) {

@@ -7,11 +7,14 @@
 
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <set>
 
 #include "conversion.hpp"
 #include "core/error.hpp"
 #include "gmsh_input.hpp"
 #include "gmsh_reference.hpp"
+#include "overset_checks.hpp"
 #include "particle_checks.hpp"
 #include "temp_dir.hpp"
 
@@ -172,6 +175,184 @@ TEST(Geometries, TaylorBarOgrid) {
     EXPECT_EQ(f.sets.at("lateral").size(), 32u * 40u);
 }
 
+/// Lattice layers from the overset interface: 0 for a particle whose hex shares a face (4
+/// nodes) with a hex of the other space, else the smallest L∞ lattice distance (minimum image
+/// on periodic axes) to such a particle of its own space.
+std::vector<int> interfaceLayers(const std::string& path, const Conversion& c) {
+    const test::GmshHexes g = test::gmshHexes(path);
+    const ParticleFile& f = c.particles;
+    std::set<std::size_t> nodesOf[2];
+    std::vector<std::size_t> hexOf(f.size());
+    for (Index a = 0; a < f.size(); ++a) {
+        hexOf[a] = g.indexOfTag.at(c.elementOfParticle[a]);
+        for (std::size_t n : g.nodes[hexOf[a]]) nodesOf[f.space[a]].insert(n);
+    }
+    std::vector<Index> touching[2];
+    for (Index a = 0; a < f.size(); ++a) {
+        const auto& other = nodesOf[1 - f.space[a]];
+        int shared = 0;
+        for (std::size_t n : g.nodes[hexOf[a]]) shared += other.count(n) > 0 ? 1 : 0;
+        if (shared >= 4) touching[f.space[a]].push_back(a);
+    }
+    std::vector<int> layer(f.size(), 0);
+    for (Index a = 0; a < f.size(); ++a) {
+        const LatticeSpace& sp = f.spaces[f.space[a]];
+        int best = 1 << 20;
+        for (Index t : touching[f.space[a]]) {
+            int distance = 0;
+            for (int d = 0; d < 3; ++d) {
+                int k = std::abs(f.latticeIndex[a][d] - f.latticeIndex[t][d]);
+                if (sp.periodic[d]) k = std::min(k, sp.cells[d] - k);
+                distance = std::max(distance, k);
+            }
+            best = std::min(best, distance);
+        }
+        layer[a] = best;
+    }
+    return layer;
+}
+
+/// DESIGN §6 across a core/annulus interface: every particle of the layer next to the
+/// interface is transient in the other space, from both sides; no particle of space s at
+/// layer ≥ farLayer[s] is (−1: no such bound); every entry's θ maps back to X. Prints the
+/// transient counts per layer.
+void expectTransientsAcrossTheInterface(const std::string& path, const Conversion& c,
+                                        const std::array<int, 2>& farLayer, double scale) {
+    const ParticleFile& f = c.particles;
+    ASSERT_EQ(f.spaces.size(), 2u);
+    validateParticleFile(f);
+    const std::vector<int> layer = interfaceLayers(path, c);
+    const auto entries = test::entryOf(f);
+    std::map<std::pair<Index, int>, std::array<long, 2>>
+        counts;  // (space, layer) → (transient, all)
+    for (Index b = 0; b < f.size(); ++b) {
+        const Index s = f.space[b];
+        const bool transient = entries.count({b, 1 - s}) == 1;
+        EXPECT_EQ(f.transient[b], transient ? 1 : 0);
+        auto& n = counts[{s, layer[b]}];
+        n[0] += transient;
+        ++n[1];
+        if (layer[b] == 0) {
+            EXPECT_TRUE(transient) << "particle " << b << " next to the interface";
+        }
+        if (farLayer[s] >= 0 && layer[b] >= farLayer[s]) {
+            EXPECT_FALSE(transient) << "particle " << b << " at layer " << layer[b];
+        }
+    }
+    for (const auto& [key, n] : counts) {
+        std::printf("  space %d, layer %d from the interface: %ld of %ld transient\n", key.first,
+                    key.second, n[0], n[1]);
+    }
+    for (int s = 0; s < 2; ++s) {
+        EXPECT_GT((counts[{s, 0}][1]), 0) << "space " << s << " touches the other";
+        if (farLayer[s] >= 0) {
+            long far = 0;
+            for (const auto& [key, n] : counts)
+                far += key.first == s && key.second >= farLayer[s] ? n[1] : 0;
+            EXPECT_GT(far, 0) << "space " << s << " has particles far from the interface";
+        }
+    }
+    std::vector<std::string> warnings;
+    test::expectEntriesReproduceX(f, test::spaceMapsOf(readHexMesh(path, {}, warnings)), scale);
+}
+
+void printMetric(const char* name, const Conversion& c) {
+    for (std::size_t s = 0; s < c.stats.metric.size(); ++s) {
+        const MetricReport& m = c.stats.metric[s];
+        std::printf("%s: space %zu: worst cond(dX/dtheta) at the particles %.3f", name, s,
+                    m.condition);
+        if (m.oneLayerAxis >= 0) std::printf(" (in-plane %.3f)", m.inPlaneCondition);
+        std::printf(", det at cell corners >= %.3f of the centre's\n", m.cornerRatio);
+        EXPECT_LT(m.condition, 5.0);
+        EXPECT_GT(m.cornerRatio, 0.5);
+    }
+}
+
+TEST(Geometries, QuarterCylinderTransientsOnBothSides) {
+    // Core cells 0.625 mm, annulus cells 0.5 to 1 mm: each side reaches 3 of its cells (2κ,
+    // κ = 1.5) into the other space, so from layer 3 on nothing is transient.
+    const std::string path = geometry("quarter_cylinder.geo");
+    const Conversion c = convert(path);
+    expectTransientsAcrossTheInterface(path, c, {3, 3}, 0.01);
+    printMetric("quarter cylinder", c);
+}
+
+TEST(Geometries, TaylorBarOgridTransientsOnBothSides) {
+    // The annulus's radial cells (0.4 to 0.6 mm) are coarser than the core's (0.38 mm): its
+    // reach of 3 radial cells covers the whole core (every core particle is transient), while
+    // the core reaches 3 of its cells into the annulus: its outer two rows stay out.
+    const std::string path = geometry("taylor_bar.geo");
+    const Conversion c = convert(path);
+    expectTransientsAcrossTheInterface(path, c, {-1, 2}, 0.03);
+    long core = 0;
+    for (Index b = 0; b < c.particles.size(); ++b) core += c.particles.space[b] == 0;
+    EXPECT_EQ(c.stats.transients[1].particles, core);
+    printMetric("Taylor bar O-grid", c);
+}
+
+TEST(Geometries, TwoBlocksAbuttingAndOverlapping) {
+    const std::string path = geometry("two_blocks.geo");
+    const double h = 1e-3, W = 4e-3;
+    for (int plane : {0, 1}) {
+        const double T = plane ? h : W;
+        const Parameters layout = {{"plane", plane}};
+        // Abutting: nothing cut, ω of a transient = the home cell's volume over the other
+        // space's cell volume: (1/2)^d fine in coarse, 2^d coarse in fine (d = 3, or 2 in
+        // the plane layout, whose cells are all T thick).
+        const Conversion a = convert(path, layout);
+        expectMatchesGmsh(path, a, layout);
+        const ParticleFile& f = a.particles;
+        ASSERT_EQ(f.spaces.size(), 2u);
+        EXPECT_NEAR(totalVolume(f), 16e-3 * W * T, 1e-10 * 16e-3 * W * T);
+        const double fineInCoarse = plane ? 0.25 : 0.125;
+        long counted[2] = {0, 0};
+        for (std::size_t e = 0; e < f.overset.size(); ++e) {
+            const double expected = f.overset.space[e] == 0 ? fineInCoarse : 1.0 / fineInCoarse;
+            // gmsh places the nodes to ~1e-13 relative
+            EXPECT_NEAR(f.overset.omega[e], expected, 1e-10 * expected) << "entry " << e;
+            ++counted[f.overset.space[e]];
+        }
+        EXPECT_GT(counted[0], 0);
+        EXPECT_GT(counted[1], 0);
+        std::vector<std::string> warnings;
+        test::expectEntriesReproduceX(
+            f, test::spaceMapsOf(readHexMesh(path, MeshReadOptions{layout}, warnings)), 0.016);
+
+        // Overlap of 2 coarse cells (aligned): exactly the coarse particles whose centres lie
+        // in the fine block go (2 columns), and the kept volume is the union's.
+        Parameters overlap = layout;
+        overlap.emplace_back("overlap", 2);
+        const Conversion b = convert(path, overlap);
+        const ParticleFile& g = b.particles;
+        const long columns = plane ? 4 : 16;  // coarse cells in a column across y (and z)
+        EXPECT_EQ(g.size(), f.size() - 2 * columns);
+        for (Index p = 0; p < g.size(); ++p) {
+            if (g.space[p] == 0) {
+                EXPECT_LT(g.X[p][0], 6e-3);
+            }
+        }
+        EXPECT_NEAR(totalVolume(g), 14e-3 * W * T, 1e-10 * 14e-3 * W * T);
+        ASSERT_EQ(b.stats.cuts.size(), 1u);
+        EXPECT_EQ(b.stats.cuts[0].particles, 2 * columns);
+
+        // Overlap of 1.25 cells (not aligned): one coarse column goes, the next stays and
+        // overlaps the fine block by a quarter cell: that much is counted twice, as reported.
+        overlap.back().second = 1.25;
+        const Conversion d = convert(path, overlap);
+        const HoleCutReport& cut = d.stats.cuts.at(0);
+        EXPECT_EQ(cut.particles, columns);
+        EXPECT_NEAR(cut.gap, 0.0, 1e-22);
+        const double quarter = 0.25 * h * W * T;
+        EXPECT_NEAR(cut.doubleCounted, quarter, 1e-10 * quarter);
+        EXPECT_NEAR(totalVolume(d.particles), 14.75e-3 * W * T + quarter, 1e-10 * 15e-3 * W * T);
+        std::printf(
+            "two blocks (plane %d), overlap 1.25 cells: gap %.3e m^3, double-counted %.3e "
+            "m^3 (%.3f %% of the body)\n",
+            plane, cut.gap, cut.doubleCounted,
+            100.0 * cut.doubleCounted / totalVolume(d.particles));
+    }
+}
+
 TEST(Geometries, NotchedPlate) {
     const std::string path = geometry("notched_plate.geo");
     const Conversion c = convert(path);
@@ -297,6 +478,24 @@ TEST(PreprocErrors, BadInputsGiveClearErrors) {
     EXPECT_NE(errorOf<MeshError>("bad_transfinite.geo").find("transfinite"), std::string::npos);
     EXPECT_NE(errorOf<InputError>("inverted.msh", {{"refine", 2}}).find(".geo files only"),
               std::string::npos);
+    EXPECT_NE(errorOf<MeshError>("cylinder_single_space.geo")
+                  .find("collapses onto the line from (0, 0, 0.002) to (0, 0, 0), like a single "
+                        "cylindrical space on its axis"),
+              std::string::npos);
+}
+
+TEST(PreprocErrors, SpaceCloseToAnAxisIsWarnedAbout) {
+    // One cylindrical space whose inner radius is 1e-4 of the outer: converted, with a warning
+    // naming the cell that nearly collapses and the axis.
+    const std::string path = std::string(GSPH_SOURCE_DIR) + "/tests/data/cylinder_near_axis.geo";
+    std::vector<std::string> warnings;
+    const Conversion c = convertHexMesh(readHexMesh(path, {}, warnings));
+    ASSERT_EQ(c.warnings.size(), 1u);
+    EXPECT_NE(c.warnings[0].find("space 0: the cell of particle"), std::string::npos)
+        << c.warnings[0];
+    EXPECT_NE(c.warnings[0].find("nearly collapses onto a line"), std::string::npos);
+    EXPECT_NE(c.warnings[0].find("coordinate axis"), std::string::npos);
+    EXPECT_LT(c.stats.metric[0].cornerRatio, 1e-3);
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
 #include <string>
+#include <utility>
 
 #include "core/error.hpp"
 #include "io/hdf5_file.hpp"
@@ -45,6 +47,42 @@ ParticleFile sampleFile() {
     return f;
 }
 
+/// One body of two spaces with transient particles (DESIGN §6), and a body of one space.
+ParticleFile oversetFile() {
+    ParticleFile f;
+    f.spaces.resize(3);
+    f.spaces[0].cells = {2, 2, 1};
+    f.spaces[1].cells = {3, 1, 1};
+    f.spaces[1].dtheta = 0.5;
+    f.spaces[2].cells = {2, 1, 1};
+    auto add = [&](Index s, Index b, std::array<Index, 3> ijk) {
+        const double d = f.spaces[s].dtheta;
+        const Vec3 theta = d * Vec3(ijk[0] + 0.5, ijk[1] + 0.5, ijk[2] + 0.5);
+        f.theta.push_back(theta);
+        f.X.push_back(1e-3 * theta + Vec3(0.1 * s, 0.0, 0.0));
+        f.volume.push_back(1e-9);
+        f.space.push_back(s);
+        f.body.push_back(b);
+        f.latticeIndex.push_back(ijk);
+    };
+    for (Index j = 0; j < 2; ++j) {
+        for (Index i = 0; i < 2; ++i) add(0, 0, {i, j, 0});
+    }
+    for (Index i = 0; i < 3; ++i) add(1, 0, {i, 0, 0});
+    for (Index i = 0; i < 2; ++i) add(2, 1, {i, 0, 0});
+    f.bodies = {{"rod", 1}, {"anvil", 2}};
+    f.transient = {0, 1, 0, 1, 1, 1, 0, 0, 0};
+    f.overset.kappa = 1.5;
+    // Sorted by (space, particle): particles 4 and 5 in space 0, particles 1 and 3 in space 1.
+    f.overset.particle = {4, 5, 1, 3};
+    f.overset.space = {0, 0, 1, 1};
+    f.overset.theta = {Vec3(2.25, 0.5, 0.5), Vec3(2.75, 0.5, 1.0 / 3.0), Vec3(-0.25, 0.5, 0.25),
+                       Vec3(-0.75, 0.5, 0.25)};
+    f.overset.omega = {0.125, 0.125, 8.0, 8.0 + 1e-9};
+    f.provenance = {"gsph-test", "9.9.9", "rod.geo", std::string(64, 'b'), "", "SI"};
+    return f;
+}
+
 bool bitwiseEqual(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
     // A file round trip must give back the very same bits, so exact comparison is the point.
     return a.size() == b.size() &&
@@ -68,6 +106,12 @@ std::string run(const std::string& command, int& status) {
     while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
     status = ::pclose(pipe);
     return out;
+}
+
+/// Runs a Python script (h5py) from `dir`; returns its output, `status` its exit status.
+std::string runPython(const test::TempDir& dir, const std::string& script, int& status) {
+    std::ofstream(dir / "check.py") << script;
+    return run("/usr/bin/python3 " + (dir / "check.py").string() + " 2>&1", status);
 }
 
 TEST(ParticleFile, RoundTripGivesIdenticalArrays) {
@@ -132,13 +176,11 @@ TEST(ParticleFile, ReadableByH5py) {
         "print(f['spaces/cells'][1].tolist(), f['spaces/periodic'][1].tolist())\n"
         "print(sorted(f['sets'].keys()), f['sets/tip face'][:].tolist())\n"
         "print([n.decode() for n in f['bodies/name'][:]], p['X'].attrs['units'])\n";
-    std::ofstream(dir / "check.py") << script;
     int status = 0;
-    const std::string out =
-        run("/usr/bin/python3 " + (dir / "check.py").string() + " 2>&1", status);
+    const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
     // Python prints a float in its shortest round-trip form: compare by value, exactly.
-    EXPECT_NE(out.find("gsph-particles 1.0 SI"), std::string::npos) << out;
+    EXPECT_NE(out.find("gsph-particles 1.1 SI"), std::string::npos) << out;
     EXPECT_NE(out.find("(7, 3) (7, 3) (7,) (7, 3)"), std::string::npos) << out;
     EXPECT_NE(out.find("[3, 1, 1] [1, 0, 0]"), std::string::npos) << out;
     EXPECT_NE(out.find("['clamp', 'empty', 'tip face'] [4, 5, 6]"), std::string::npos) << out;
@@ -164,6 +206,90 @@ TEST(ParticleFile, InvalidContentIsRejectedAndNothingIsWritten) {
     f = sampleFile();
     f.latticeIndex[6] = {3, 0, 0};
     EXPECT_THROW(writeParticleFile(dir / "p.h5", f), InputError);
+    EXPECT_EQ(dir.entries(), 0);
+}
+
+TEST(ParticleFile, OversetRoundTrip) {
+    test::TempDir dir;
+    const ParticleFile f = oversetFile();
+    writeParticleFile(dir / "p.h5", f);
+    const ParticleFile g = readParticleFile(dir / "p.h5");
+    EXPECT_EQ(g.transient, f.transient);
+    EXPECT_EQ(g.overset.particle, f.overset.particle);
+    EXPECT_EQ(g.overset.space, f.overset.space);
+    EXPECT_TRUE(bitwiseEqual(g.overset.theta, f.overset.theta));
+    EXPECT_TRUE(bitwiseEqual(g.overset.omega, f.overset.omega));
+    EXPECT_EQ(std::memcmp(&g.overset.kappa, &f.overset.kappa, sizeof(double)), 0);
+    const Reference ref = buildReference(g, std::vector<double>{8960.0, 7850.0}, 1.2);
+    ASSERT_EQ(ref.overset.size(), f.overset.size());
+    for (std::size_t e = 0; e < f.overset.size(); ++e) {
+        EXPECT_EQ(ref.overset[e].particle, f.overset.particle[e]);
+        EXPECT_EQ(ref.overset[e].space, f.overset.space[e]);
+        EXPECT_EQ(
+            std::memcmp(ref.overset[e].theta.data(), f.overset.theta[e].data(), 3 * sizeof(double)),
+            0);
+        EXPECT_EQ(std::memcmp(&ref.overset[e].omega, &f.overset.omega[e], sizeof(double)), 0);
+    }
+}
+
+TEST(ParticleFile, OversetReadableByH5pyAndFormat10StillReads) {
+    test::TempDir dir;
+    const ParticleFile f = oversetFile();
+    writeParticleFile(dir / "p.h5", f);
+    // Read the overset data with h5py, then strip it and label the file 1.0, as an older
+    // gsph-preproc wrote it.
+    const std::string script =
+        "import h5py\n"
+        "f = h5py.File('" +
+        (dir / "p.h5").string() +
+        "', 'r+')\n"
+        "o = f['overset']\n"
+        "print(f.attrs['format_version'], o['particle'].shape, o['theta'].shape, "
+        "o['omega'][2], o['kappa'][0], f['particles/transient'][:].tolist())\n"
+        "del f['overset']\n"
+        "del f['particles/transient']\n"
+        "f.attrs['format_version'] = '1.0'\n";
+    int status = 0;
+    const std::string out = runPython(dir, script, status);
+    ASSERT_EQ(status, 0) << out;
+    EXPECT_EQ(out, "1.1 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
+    const ParticleFile old = readParticleFile(dir / "p.h5");
+    EXPECT_TRUE(old.transient.empty());
+    EXPECT_EQ(old.overset.size(), 0u);
+    EXPECT_EQ(old.size(), f.size());
+}
+
+TEST(ParticleFile, InvalidOversetIsRejected) {
+    test::TempDir dir;
+    const std::vector<std::pair<std::string, std::function<void(ParticleFile&)>>> faults = {
+        {"particle out of range", [](ParticleFile& f) { f.overset.particle[3] = 9; }},
+        {"space out of range", [](ParticleFile& f) { f.overset.space[3] = 3; }},
+        {"own home space", [](ParticleFile& f) { f.overset.particle[0] = 0; }},
+        {"another body", [](ParticleFile& f) { f.overset.space[3] = 2; }},
+        {"not sorted",
+         [](ParticleFile& f) { std::swap(f.overset.particle[0], f.overset.particle[1]); }},
+        {"not sorted", [](ParticleFile& f) { f.overset.particle[1] = 4; }},
+        {"theta", [](ParticleFile& f) { f.overset.theta[1][0] = NAN; }},
+        {"theta", [](ParticleFile& f) { f.overset.theta[2][0] = -1.6; }},  // 2κΔθ = 1.5 in space 1
+        {"omega", [](ParticleFile& f) { f.overset.omega[2] = 0.0; }},
+        {"omega", [](ParticleFile& f) { f.overset.omega[2] = INFINITY; }},
+        {"do not match", [](ParticleFile& f) { f.transient[6] = 1; }},
+        {"do not match", [](ParticleFile& f) { f.transient[1] = 0; }},
+        {"wrong length", [](ParticleFile& f) { f.transient.pop_back(); }},
+        {"without /particles/transient", [](ParticleFile& f) { f.transient.clear(); }},
+        {"differ in length", [](ParticleFile& f) { f.overset.omega.pop_back(); }},
+        {"kappa", [](ParticleFile& f) { f.overset.kappa = 0.0; }},
+    };
+    for (const auto& [fault, mutate] : faults) {
+        ParticleFile f = oversetFile();
+        mutate(f);
+        try {
+            writeParticleFile(dir / "p.h5", f);
+            ADD_FAILURE() << "no error for: " << fault;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(fault), std::string::npos) << e.what();
+        }
+    }
     EXPECT_EQ(dir.entries(), 0);
 }
 
