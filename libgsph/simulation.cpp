@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/checkpoint.hpp"
 #include "spaces/metric.hpp"
 
 namespace gsph {
@@ -57,12 +58,22 @@ void Simulation::start() {
     integrator_->initialize(state_);
 }
 
+void Simulation::resume(State state, const std::string& source) {
+    if (integrator_) throw Error("resume() must come before the first step");
+    checkStateShape(state, State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs())),
+                    source);
+    state_ = std::move(state);
+    integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_);
+    integrator_->resume(state_);
+}
+
 void Simulation::step() {
     start();
     integrator_->step(state_);
 }
 
-void Simulation::advanceTo(double endTime, const std::function<void(const State&)>& afterStep) {
+bool Simulation::advanceTo(double endTime, const std::function<void(const State&)>& afterStep,
+                           const std::function<bool(const State&)>& stop) {
     start();
     while (state_.time < endTime) {
         // Land on endTime rather than overshoot it (1e-12 keeps round-off from adding a step).
@@ -71,7 +82,9 @@ void Simulation::advanceTo(double endTime, const std::function<void(const State&
         if (state_.dt > remaining) state_.dt = remaining;
         integrator_->step(state_);
         if (afterStep) afterStep(state_);
+        if (stop && stop(state_)) return false;
     }
+    return true;
 }
 
 }  // namespace gsph

@@ -13,6 +13,7 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "boundary/constraints.hpp"
@@ -41,9 +42,17 @@ class Simulation {
 
     /// Computes the initial accelerations and time step; called by the first step if needed.
     void start();
+    /// Instead of start(): continues from `state`, a state of this same run after some step
+    /// (read from a checkpoint, io/checkpoint.hpp), so that the steps that follow are bit-
+    /// identical to those of the uninterrupted run. Constraints must be set as in that run.
+    /// Throws InputError naming `source` if the state does not fit this reference.
+    void resume(State state, const std::string& source);
     void step();
-    /// Steps until state().time ≥ endTime (the last step is shortened to land on it).
-    void advanceTo(double endTime, const std::function<void(const State&)>& afterStep = {});
+    /// Steps until state().time ≥ endTime (the last step is shortened to land on it). After
+    /// each step calls afterStep, then stop: if that returns true, returns false at once
+    /// (endTime not reached). Returns true once endTime is reached.
+    bool advanceTo(double endTime, const std::function<void(const State&)>& afterStep = {},
+                   const std::function<bool(const State&)>& stop = {});
 
     const Reference& reference() const { return ref_; }
     const State& state() const { return state_; }

@@ -111,9 +111,9 @@ const toml::array* arrayOfTables(const std::string& file, const toml::table& roo
 void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const toml::table* run = root["run"].as_table();
     if (!run) throw InputError(file + ":1: missing table [run]");
-    TableReader r(
-        file, *run, "[run]",
-        {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity", "hourglass"});
+    TableReader r(file, *run, "[run]",
+                  {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity",
+                   "hourglass", "checkpoint_interval", "min_dt_ratio"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -131,6 +131,10 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
         c.viscosity = {beta[0], beta[1]};
     }
     c.hourglass = r.number("hourglass", c.hourglass, false, false);
+    c.checkpointInterval = r.number("checkpoint_interval", c.outputInterval, false, false);
+    c.minDtRatio = r.number("min_dt_ratio", c.minDtRatio, false, false);
+    if (c.minDtRatio >= 1.0)
+        r.fail(run->get("min_dt_ratio"), "'min_dt_ratio' in [run] must be < 1 (0 = off)");
 }
 
 }  // namespace

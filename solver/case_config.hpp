@@ -38,6 +38,11 @@ struct CaseConfig {
     double kappa = 1.2;
     ViscosityCoefficients viscosity{1.0, 1.0};
     double hourglass = 0.1;
+    /// [s] of simulated time between checkpoints (default: output_interval; 0 = only on a
+    /// signal).
+    double checkpointInterval = 0.0;
+    /// A stable Δt below this fraction of the first Δt stops the run (0 = off).
+    double minDtRatio = 1e-3;
     std::vector<MaterialSpec> materials;
     std::vector<BodySpec> bodies;
     std::vector<SetSpec> sets;

@@ -1,17 +1,21 @@
 // SPDX-License-Identifier: MIT
 #include "run.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/version.hpp"
-#include "io/atomic_file.hpp"
+#include "history.hpp"
+#include "io/checkpoint.hpp"
 #include "io/particle_file.hpp"
+#include "io/sha256.hpp"
 #include "io/snapshot.hpp"
+#include "progress.hpp"
+#include "signals.hpp"
 #include "simulation.hpp"
 
 namespace gsph::solver {
@@ -78,52 +82,64 @@ std::vector<VelocityConstraint> matchSets(const CaseConfig& c, const ParticleFil
     return out;
 }
 
-class History {
-  public:
-    explicit History(std::filesystem::path path) : path_(std::move(path)) {
-        rows_ << "time,step,dt,kinetic_energy,internal_energy,hourglass_work,viscous_work,external_"
-                 "work,"
-                 "total_energy,momentum_x,momentum_y,momentum_z,plastic_work,damage_dissipation\n";
-    }
-    void add(const State& s, const EnergyReport& e) {
-        char line[512];
-        std::snprintf(line, sizeof line,
-                      "%.9e,%ld,%.6e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n",
-                      s.time, s.step, s.dt, e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
-                      e.boundaryWork, e.total(), e.momentum[0], e.momentum[1], e.momentum[2],
-                      e.plasticWork, e.damageDissipation);
-        rows_ << line;
-    }
-    void flush() const {
-        writeAtomically(path_, [&](const std::filesystem::path& temp) {
-            std::ofstream out(temp);
-            out << rows_.str();
-            if (!out.flush()) throw IoError(path_.string() + ": write failed (disk full?)");
-        });
-    }
-
-  private:
-    std::filesystem::path path_;
-    std::ostringstream rows_;
+// Where the run is in its schedule: what a checkpoint's counters hold besides the State.
+struct Schedule {
+    long nextOutput = 1;      ///< k of the next scheduled snapshot time k·output_interval
+    long nextSnapshot = 0;    ///< number of the next snapshot file
+    long nextCheckpoint = 1;  ///< m of the next checkpoint time m·checkpoint_interval
 };
 
-void drawProgress(double t, double end, long steps, double wall, int particles) {
-    const double fraction = std::min(1.0, t / end);
-    const int width = 30;
-    const int filled = static_cast<int>(fraction * width);
-    const double rate = wall > 0 ? steps / wall : 0.0;
-    const double eta = fraction > 0 ? wall * (1.0 - fraction) / fraction : 0.0;
-    std::fprintf(
-        stderr,
-        "\r[%.*s%*s] %5.1f%%  t = %.3e s  %.0f steps/s  %.2e particle-steps/s  ETA %.0f s   ",
-        filled, "##############################", width - filled, "", 100 * fraction, t, rate,
-        rate * particles, eta);
-    std::fflush(stderr);
+// The files the run is built from, with their hashes (a restart must find them unchanged).
+std::vector<CheckpointInput> inputsOf(const CaseConfig& c) {
+    return {{"case", c.caseFile.string(), sha256File(c.caseFile)},
+            {"particles", c.particles.string(), sha256File(c.particles)}};
+}
+
+// One line naming the file that changed since the checkpoint was written.
+void checkInputs(const std::vector<CheckpointInput>& then, const std::vector<CheckpointInput>& now,
+                 const std::filesystem::path& checkpoint) {
+    for (const CheckpointInput& current : now) {
+        const CheckpointInput* old = nullptr;
+        for (const CheckpointInput& candidate : then)
+            if (candidate.role == current.role) old = &candidate;
+        if (!old) throw InputError(checkpoint.string() + ": records no " + current.role + " file");
+        if (old->sha256 != current.sha256)
+            throw InputError(checkpoint.string() + ": " + current.role + " file '" + current.file +
+                             "' differs from the one the checkpoint was written " + "with ('" +
+                             old->file + "', sha256 " + old->sha256.substr(0, 12) + "…, now " +
+                             current.sha256.substr(0, 12) + "…); a restart needs the same " +
+                             current.role + " file");
+    }
+}
+
+long counter(const RunRecord& run, const std::string& name, const std::filesystem::path& file) {
+    const auto it = run.counters.find(name);
+    if (it == run.counters.end())
+        throw InputError(file.string() + ": checkpoint lacks the run counter '" + name + "'");
+    return static_cast<long>(it->second);
+}
+
+RunRecord recordOf(const std::vector<CheckpointInput>& inputs, const Schedule& schedule,
+                   const History& history) {
+    RunRecord r;
+    r.inputs = inputs;
+    r.counters["next_output"] = schedule.nextOutput;
+    r.counters["next_snapshot"] = schedule.nextSnapshot;
+    r.counters["next_checkpoint"] = schedule.nextCheckpoint;
+    r.texts["history"] = history.text();
+    return r;
+}
+
+std::string format(const char* fmt, double a, long b) {
+    char line[160];
+    std::snprintf(line, sizeof line, fmt, a, b);
+    return line;
 }
 
 }  // namespace
 
 RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
+    RunLog& log = *options.log;
     ParticleFile file;
     try {
         file = readParticleFile(c.particles);
@@ -131,25 +147,31 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         throw InputError(c.caseFile.string() + ":" + std::to_string(c.particlesLine) +
                          ": particle file: " + e.what());
     }
+    const std::vector<CheckpointInput> inputs = inputsOf(c);
+    // A restart is checked before anything is built: the same case and particle file.
+    std::optional<Checkpoint> checkpoint;
+    if (!options.restart.empty()) {
+        checkpoint = readCheckpoint(options.restart);
+        checkInputs(checkpoint->run.inputs, inputs, options.restart);
+    }
     BodySetup bodies = matchBodies(c, file);
     std::vector<VelocityConstraint> constraints = matchSets(c, file);
     SolverOptions solverOptions;
     solverOptions.cfl = c.cfl;
     solverOptions.viscosity = c.viscosity;
     solverOptions.hourglass = c.hourglass;
+    solverOptions.minTimeStepRatio = c.minDtRatio;
     Simulation sim(buildReference(file, bodies.density, c.kappa), std::move(bodies.materials),
                    solverOptions);
     for (VelocityConstraint& vc : constraints) sim.constrain(std::move(vc));
     const Reference& ref = sim.reference();
-    std::vector<Vec3> initial(static_cast<std::size_t>(ref.size()));
-    for (Index a = 0; a < ref.size(); ++a)
-        initial[static_cast<std::size_t>(a)] =
-            bodies.velocity[static_cast<std::size_t>(ref.body[static_cast<std::size_t>(a)])];
-    sim.setVelocities(initial);
 
     std::filesystem::create_directories(options.runDir);
     const Provenance provenance = provenanceOf("gsph-solve", kVersion, c.caseFile);
+    const std::filesystem::path checkpointPath = options.runDir / kCheckpointName;
     History history(options.runDir / "history.csv");
+    ProgressBar progress(options.progress, c.endTime, ref.size());
+    log.beforePrint = [&] { progress.clear(); };
     RunSummary summary;
     summary.particles = ref.size();
     double totalMass = 0, meshMass = 0;
@@ -162,54 +184,130 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     std::snprintf(line, sizeof line,
                   "particles %d, pairs %d, mass %.6g kg (ρ0 × mesh volume: %.6g kg)", ref.size(),
                   ref.pairs.pairs(), totalMass, meshMass);
-    options.log(line);
+    log.add(line);
 
-    auto snapshot = [&](const State& s) {
+    Schedule schedule;
+    const auto snapshot = [&](const State& s) {
         char name[64];
-        std::snprintf(name, sizeof name, "snapshot_%06d.h5", summary.snapshots++);
+        std::snprintf(name, sizeof name, "snapshot_%06ld.h5", schedule.nextSnapshot++);
         writeSnapshot(options.runDir / name, ref, s, provenance);
         history.flush();
+        ++summary.snapshots;
+        log.add(std::string(name) + format(": t = %.6e s, step %ld", s.time, s.step));
+        log.flush();
     };
-    sim.start();
-    history.add(sim.state(), sim.energy());
-    snapshot(sim.state());
+    const auto writeCheckpointNow = [&](const State& s) {
+        const auto t0 = Clock::now();
+        writeCheckpoint(checkpointPath, s, recordOf(inputs, schedule, history), provenance);
+        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        std::snprintf(line, sizeof line, "%s: t = %.6e s, step %ld (%.1f kB, written in %.3f s)",
+                      kCheckpointName, s.time, s.step,
+                      static_cast<double>(std::filesystem::file_size(checkpointPath)) / 1e3,
+                      seconds);
+        log.add(line);
+        log.flush();
+    };
+
+    if (checkpoint) {
+        const RunRecord& run = checkpoint->run;
+        schedule.nextOutput = counter(run, "next_output", options.restart);
+        schedule.nextSnapshot = counter(run, "next_snapshot", options.restart);
+        schedule.nextCheckpoint = counter(run, "next_checkpoint", options.restart);
+        const auto text = run.texts.find("history");
+        if (text == run.texts.end())
+            throw InputError(options.restart.string() + ": checkpoint lacks the history");
+        history.restore(text->second, options.restart.string());
+        sim.resume(std::move(checkpoint->state), options.restart.string());
+        checkpoint.reset();
+        log.add("restart from " + options.restart.string() +
+                format(": t = %.6e s, step %ld", sim.state().time, sim.state().step));
+    } else {
+        std::vector<Vec3> initial(static_cast<std::size_t>(ref.size()));
+        for (Index a = 0; a < ref.size(); ++a)
+            initial[static_cast<std::size_t>(a)] =
+                bodies.velocity[static_cast<std::size_t>(ref.body[static_cast<std::size_t>(a)])];
+        sim.setVelocities(initial);
+        sim.start();
+        history.add(sim.state(), sim.energy());
+        snapshot(sim.state());
+    }
+
+    // Tolerance of "this time is reached", as Simulation::advanceTo lands on its end time.
+    const double reachedTolerance = 1e-12 * std::max(1.0, c.endTime);
+    const auto afterStep = [&](const State& s) {
+        progress.update(s.time, s.step);
+        if (c.checkpointInterval <= 0.0 || s.time >= c.endTime - reachedTolerance) return;
+        const auto due = [&] {
+            return s.time >= static_cast<double>(schedule.nextCheckpoint) * c.checkpointInterval -
+                                 reachedTolerance;
+        };
+        if (!due()) return;
+        while (due()) ++schedule.nextCheckpoint;
+        writeCheckpointNow(s);
+    };
+    const auto stop = [&](const State& s) {
+        if (const int signal = options.stopSignal ? options.stopSignal() : 0) {
+            summary.stopReason = signalName(signal);
+            return true;
+        }
+        if (options.stopAfterSteps > 0 && s.step >= options.stopAfterSteps) {
+            summary.stopReason = "--stop-after-steps " + std::to_string(options.stopAfterSteps);
+            return true;
+        }
+        return false;
+    };
+    const long firstStep = sim.state().step;
+    progress.start(sim.state().time, firstStep);
     const auto t0 = Clock::now();
-    double lastDraw = -1.0;
     try {
-        for (int k = 1; sim.state().time < c.endTime * (1 - 1e-12); ++k) {
-            const double target = std::min(c.endTime, k * c.outputInterval);
-            sim.advanceTo(target, [&](const State& s) {
-                const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
-                if (options.progress && wall - lastDraw > 0.2) {
-                    drawProgress(s.time, c.endTime, s.step, wall, summary.particles);
-                    lastDraw = wall;
-                }
-            });
+        for (bool last = false; !last; ++schedule.nextOutput) {
+            const double target =
+                std::min(c.endTime, static_cast<double>(schedule.nextOutput) * c.outputInterval);
+            last = target >= c.endTime * (1 - 1e-12);
+            if (!sim.advanceTo(target, afterStep, stop)) {
+                // Interrupted: the checkpoint resumes this interval; the snapshot shows the
+                // state (its number is rewritten by the restarted run's scheduled snapshot).
+                writeCheckpointNow(sim.state());
+                history.add(sim.state(), sim.energy());
+                snapshot(sim.state());
+                summary.interrupted = true;
+                summary.checkpoint = checkpointPath;
+                break;
+            }
             history.add(sim.state(), sim.energy());
             snapshot(sim.state());
         }
     } catch (const NumericalError& e) {
         snapshot(sim.state());
-        options.log(std::string("stopped: ") + e.what() + "; final state written");
+        log.add(std::string("stopped: ") + e.what() + "; final state written");
         throw;
     }
+    progress.clear();
     summary.wallSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
-    if (options.progress) std::fprintf(stderr, "\n");
     summary.steps = sim.state().step;
-    summary.particleStepsPerSecond =
-        summary.steps * static_cast<double>(summary.particles) / summary.wallSeconds;
+    summary.time = sim.state().time;
+    summary.particleStepsPerSecond = static_cast<double>(summary.steps - firstStep) *
+                                     static_cast<double>(summary.particles) /
+                                     std::max(summary.wallSeconds, 1e-9);
+    if (summary.interrupted) {
+        log.add("interrupted (" + summary.stopReason +
+                format("): t = %.6e s, step %ld; restart with --restart ", summary.time,
+                       summary.steps) +
+                checkpointPath.string());
+        return summary;
+    }
     const EnergyReport e = sim.energy();
     std::snprintf(line, sizeof line,
                   "done: t = %.4e s, %ld steps, %d snapshots, %.2f s wall, %.3e particle-steps/s",
                   sim.state().time, summary.steps, summary.snapshots, summary.wallSeconds,
                   summary.particleStepsPerSecond);
-    options.log(line);
+    log.add(line);
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
                   "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J",
                   e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork,
                   e.plasticWork, e.damageDissipation);
-    options.log(line);
+    log.add(line);
     return summary;
 }
 

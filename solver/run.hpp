@@ -1,8 +1,15 @@
 // SPDX-License-Identifier: MIT
-// One run of gsph-solve: case file + particle file → snapshots, history.csv and run.log in the
-// run folder. Every file is written under a temporary name and renamed (io/atomic_file.hpp).
+// One run of gsph-solve: case file + particle file → snapshots, history.csv, run.log and
+// checkpoints in the run folder. Every file is written under a temporary name and renamed
+// (io/atomic_file.hpp).
+//
+// Schedule: snapshot k at t = k·output_interval (the steps land on it), a checkpoint after the
+// first step at or past each m·checkpoint_interval (checkpoints never change the steps). A
+// stop request (SIGINT/SIGTERM, or stopAfterSteps) ends the run after the current step with a
+// checkpoint and a snapshot of that state; a restart from a checkpoint continues the schedule
+// and the trajectory bit for bit (same case and particle file, checked by their SHA-256).
 // A numerical breakdown (NaN, inverted particle, collapsed time step) writes a final snapshot
-// of the failing state, then rethrows with the particle and the time.
+// of the failing state, then rethrows the NumericalError naming the particle and the time.
 #pragma once
 
 #include <filesystem>
@@ -10,13 +17,17 @@
 #include <string>
 
 #include "case_config.hpp"
+#include "run_log.hpp"
 
 namespace gsph::solver {
 
 struct RunOptions {
     std::filesystem::path runDir;
-    bool progress = false;  ///< draw a progress line on stderr (only on a terminal)
-    std::function<void(const std::string&)> log;  ///< one line of the run log (also printed)
+    bool progress = false;            ///< draw a progress bar on stdout (only on a terminal)
+    RunLog* log = nullptr;            ///< run.log (lines are also printed)
+    std::filesystem::path restart;    ///< checkpoint to continue from (empty: start at t = 0)
+    long stopAfterSteps = 0;          ///< > 0: stop as on a signal once the step counter reaches it
+    std::function<int()> stopSignal;  ///< the signal received, or 0 (checked after every step)
 };
 
 struct RunSummary {
@@ -25,7 +36,14 @@ struct RunSummary {
     double wallSeconds = 0.0;
     double particleStepsPerSecond = 0.0;
     int particles = 0;
+    bool interrupted = false;          ///< stopped early; a checkpoint was written
+    std::string stopReason;            ///< "SIGTERM", "--stop-after-steps 40", ...
+    std::filesystem::path checkpoint;  ///< the checkpoint to restart from
+    double time = 0.0;                 ///< simulated time reached [s]
 };
+
+/// Name of the rolling checkpoint in a run folder.
+inline constexpr const char* kCheckpointName = "checkpoint.h5";
 
 RunSummary runCase(const CaseConfig& config, const RunOptions& options);
 

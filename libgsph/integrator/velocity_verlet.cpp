@@ -6,6 +6,7 @@
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -157,6 +158,15 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
     }
 }
 
+// "particle 12 at X = (…) m, t = … s": what a NumericalError names.
+std::string particleAndTime(const Reference& ref, Index a, double time) {
+    const Vec3& X = ref.X[static_cast<std::size_t>(a)];
+    char text[160];
+    std::snprintf(text, sizeof text, "particle %d at X = (%.6g, %.6g, %.6g) m, t = %.6e s", a, X[0],
+                  X[1], X[2], time);
+    return text;
+}
+
 // εmax of each particle from the per-body list (bodies without an entry never break).
 std::vector<double> stretchByParticle(const Reference& ref, const std::vector<double>& byBody) {
     std::vector<double> out(static_cast<std::size_t>(ref.size()), 0.0);
@@ -244,8 +254,7 @@ void VelocityVerlet::throwOnFailure(const State& state) const {
         const std::string what = f == Failure::Inverted
                                      ? "inverted particle (J ≤ 0)"
                                      : "non-finite deformation or stress (NaN/Inf)";
-        throw NumericalError(what + " at particle " + std::to_string(a) +
-                                 ", t = " + std::to_string(state.time) + " s",
+        throw NumericalError(what + ": " + particleAndTime(ref_, static_cast<Index>(a), state.time),
                              static_cast<long>(a), state.time);
     }
 }
@@ -319,16 +328,32 @@ double VelocityVerlet::boundaryPower(const State& state) const {
 
 double VelocityVerlet::stableTimeStep(const State& state) const {
     if (options_.fixedTimeStep > 0.0) return options_.fixedTimeStep;
-    const double ratio =
-        parallelMin(ref_.size(), std::numeric_limits<double>::infinity(), [&](Index a) {
-            const auto ia = static_cast<std::size_t>(a);
-            return work_.lengthScale[ia] / (work_.factors.soundSpeed[ia] + state.v[ia].norm());
-        });
-    if (!(ratio > 0.0) || !std::isfinite(ratio))
-        throw NumericalError("time step collapsed (Δt = " + std::to_string(options_.cfl * ratio) +
-                                 " s) at t = " + std::to_string(state.time) + " s",
-                             -1, state.time);
-    return options_.cfl * ratio;
+    const auto ratioOf = [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        return work_.lengthScale[ia] / (work_.factors.soundSpeed[ia] + state.v[ia].norm());
+    };
+    const double ratio = parallelMin(ref_.size(), std::numeric_limits<double>::infinity(), ratioOf);
+    const double dt = options_.cfl * ratio;
+    const double floor = options_.minTimeStepRatio * state.initialDt;
+    if (ratio > 0.0 && std::isfinite(ratio) && !(dt < floor)) return dt;
+    // Failure only: name the particle that limits Δt (the first NaN, or the smallest ratio).
+    Index worst = 0;
+    for (Index a = 0; a < ref_.size(); ++a) {
+        const double r = ratioOf(a);
+        if (std::isnan(r)) {
+            worst = a;
+            break;
+        }
+        if (r < ratioOf(worst)) worst = a;
+    }
+    const auto iw = static_cast<std::size_t>(worst);
+    char detail[200];
+    std::snprintf(detail, sizeof detail,
+                  "time step collapsed: Δt = %.3e s < %.3g × Δt0 = %.3e s (spacing %.3e m, "
+                  "wave speed %.3e m/s, |v| = %.3e m/s): ",
+                  dt, options_.minTimeStepRatio, floor, work_.lengthScale[iw],
+                  work_.factors.soundSpeed[iw], state.v[iw].norm());
+    throw NumericalError(detail + particleAndTime(ref_, worst, state.time), worst, state.time);
 }
 
 void VelocityVerlet::initialize(State& state) {
@@ -338,10 +363,18 @@ void VelocityVerlet::initialize(State& state) {
     updateKinematicsAndStress(state, 0.0, true);
     computeAccelerations(state);
     state.dt = stableTimeStep(state);
+    state.initialDt = state.dt;
     EnergyLedger& L = state.ledger;
     L.viscousPower = nonConservativePower(state, work_.parts.viscous);
     L.hourglassPower = nonConservativePower(state, work_.parts.hourglass);
     L.boundaryPower = boundaryPower(state);
+}
+
+void VelocityVerlet::resume(const State& state) {
+    if (!(state.dt > 0.0) || !std::isfinite(state.dt))
+        throw InputError("cannot resume a state whose next time step is " +
+                         std::to_string(state.dt) + " s");
+    bonds_.attach(state);
 }
 
 void VelocityVerlet::step(State& state) {

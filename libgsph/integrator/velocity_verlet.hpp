@@ -10,8 +10,14 @@
 //   6. v_{n+1} = v_{n+½} + ½Δt a_{n+1}                   (then constraints at t_{n+1})
 //   7. Δt_{n+1} = CFL · min_a ℓ_a/(c_a + |v_a|), ℓ_a = current particle spacing
 // On entry `state` holds t_n, x_n, v_n, a_n, F_n, σ_n, Δt_n; on exit the same at n+1.
-// Throws NumericalError (particle, time) on a NaN or an inverted particle (J ≤ 0); the state
-// is then the partially advanced one, for a final diagnostic snapshot.
+// Throws NumericalError (particle, time) on a NaN or an inverted particle (J ≤ 0), and on a
+// collapsed time step (Δt_{n+1} not finite, ≤ 0, or below minTimeStepRatio · Δt_0); the
+// message names the particle (index and reference position X), the time and the fault. The
+// state is then the partially advanced one, for a final diagnostic snapshot.
+// Across steps the integrator keeps nothing the next step reads that the State does not hold
+// (the stress factors, SoA copies and force parts are rebuilt inside every step; the bonds'
+// G and detached flags derive from State::bondIntact): resume() continues a checkpointed
+// state bit for bit.
 #pragma once
 
 #include <vector>
@@ -33,6 +39,9 @@ struct SolverOptions {
     /// εmax of brittle bonds per body id (failure/brittle_bonds.hpp); a body without an entry,
     /// or with 0, never breaks.
     std::vector<double> bondStretch;
+    /// > 0: a stable Δt below this fraction of the run's first Δt (State::initialDt) stops the
+    /// run with NumericalError naming the particle that limits it (0 = only Δt ≤ 0 or NaN).
+    double minTimeStepRatio = 0.0;
 };
 
 /// Contiguous range of one body and its material.
@@ -71,6 +80,10 @@ class VelocityVerlet {
 
     /// Computes a_n, the stress factors and Δt_n for a state (once, before the first step).
     void initialize(State& state);
+    /// Continues from a state an earlier run left after a step (a checkpoint): derives the
+    /// bonds' data from state.bondIntact and takes a_n, Δt_n and the ledger's powers as they
+    /// are (recomputing a_n would not give the same bits: the step's viscosity saw v_{n−½}).
+    void resume(const State& state);
     void step(State& state);
 
     const StepWorkspace& workspace() const { return work_; }

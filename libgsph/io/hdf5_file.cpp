@@ -29,6 +29,10 @@ hid_t memoryType() {
         return H5T_NATIVE_DOUBLE;
     } else if constexpr (std::is_same_v<T, std::int32_t>) {
         return H5T_NATIVE_INT32;
+    } else if constexpr (std::is_same_v<T, std::int64_t>) {
+        return H5T_NATIVE_INT64;
+    } else if constexpr (std::is_same_v<T, std::uint8_t>) {
+        return H5T_NATIVE_UINT8;
     } else {
         static_assert(std::is_same_v<T, std::int8_t>, "unsupported HDF5 element type");
         return H5T_NATIVE_INT8;
@@ -42,6 +46,10 @@ hid_t fileType() {
         return H5T_IEEE_F64LE;
     } else if constexpr (std::is_same_v<T, std::int32_t>) {
         return H5T_STD_I32LE;
+    } else if constexpr (std::is_same_v<T, std::int64_t>) {
+        return H5T_STD_I64LE;
+    } else if constexpr (std::is_same_v<T, std::uint8_t>) {
+        return H5T_STD_U8LE;
     } else {
         return H5T_STD_I8LE;
     }
@@ -238,12 +246,20 @@ template void File::write<std::int32_t>(const std::string&, const std::int32_t*,
                                         const std::vector<std::size_t>&);
 template void File::write<std::int8_t>(const std::string&, const std::int8_t*,
                                        const std::vector<std::size_t>&);
+template void File::write<std::int64_t>(const std::string&, const std::int64_t*,
+                                        const std::vector<std::size_t>&);
+template void File::write<std::uint8_t>(const std::string&, const std::uint8_t*,
+                                        const std::vector<std::size_t>&);
 template std::vector<double> File::read<double>(const std::string&,
                                                 std::vector<std::size_t>&) const;
 template std::vector<std::int32_t> File::read<std::int32_t>(const std::string&,
                                                             std::vector<std::size_t>&) const;
 template std::vector<std::int8_t> File::read<std::int8_t>(const std::string&,
                                                           std::vector<std::size_t>&) const;
+template std::vector<std::int64_t> File::read<std::int64_t>(const std::string&,
+                                                            std::vector<std::size_t>&) const;
+template std::vector<std::uint8_t> File::read<std::uint8_t>(const std::string&,
+                                                            std::vector<std::size_t>&) const;
 
 void File::writeStrings(const std::string& path, const std::vector<std::string>& values) {
     ensureParents(path);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// A small RAII layer over the serial HDF5 C API, for the library's files (particle file now,
-// snapshots and checkpoints later). Not a general HDF5 binding: just what those files need.
+// A small RAII layer over the serial HDF5 C API, for the library's files (particle file, snapshots,
+// checkpoints). Not a general HDF5 binding: just what those files need.
 //
 // Contract: every HDF5 identifier is owned by one object and closed exactly once; every failing
 // HDF5 call becomes an IoError naming the file, the object and HDF5's own reason; HDF5's
@@ -54,8 +54,9 @@ class QuietErrors {
     void* oldData_ = nullptr;
 };
 
-/// One open HDF5 file. Element types supported by write/read: double, std::int32_t,
-/// std::int8_t. Arrays are row-major, dims outermost first (N×3 = {N, 3}).
+/// One open HDF5 file. Element types supported by write/read: double, std::int64_t,
+/// std::int32_t, std::int8_t, std::uint8_t. Arrays are row-major, dims outermost first (N×3 = {N,
+/// 3}).
 class File {
   public:
     enum class Mode { Create, ReadOnly };

@@ -14,27 +14,6 @@ namespace {
 static_assert(sizeof(Vec3) == 3 * sizeof(double), "Vec3 must be three packed doubles");
 static_assert(sizeof(Mat3) == 9 * sizeof(double), "Mat3 must be nine packed doubles");
 
-// Eigen stores column-major; the file is row-major (documented): transpose on the way.
-std::vector<double> rowMajor(const std::vector<Mat3>& m) {
-    std::vector<double> out(9 * m.size());
-    for (std::size_t a = 0; a < m.size(); ++a)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                out[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)] =
-                    m[a](i, j);
-    return out;
-}
-
-std::vector<Mat3> fromRowMajor(const std::vector<double>& d) {
-    std::vector<Mat3> out(d.size() / 9);
-    for (std::size_t a = 0; a < out.size(); ++a)
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j)
-                out[a](i, j) =
-                    d[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)];
-    return out;
-}
-
 // An N×cols float64 dataset, its shape checked.
 std::vector<double> readRows(const h5::File& f, const std::string& path, std::size_t n,
                              std::size_t cols) {
@@ -62,6 +41,26 @@ std::vector<double> readScalars(const h5::File& f, const std::string& path, std:
 }
 
 }  // namespace
+
+std::vector<double> rowMajor(const std::vector<Mat3>& m) {
+    std::vector<double> out(9 * m.size());
+    for (std::size_t a = 0; a < m.size(); ++a)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                out[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)] =
+                    m[a](i, j);
+    return out;
+}
+
+std::vector<Mat3> fromRowMajor(const std::vector<double>& d) {
+    std::vector<Mat3> out(d.size() / 9);
+    for (std::size_t a = 0; a < out.size(); ++a)
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                out[a](i, j) =
+                    d[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)];
+    return out;
+}
 
 std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
                                               const std::vector<std::uint8_t>& bondIntact) {

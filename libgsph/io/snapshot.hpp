@@ -41,6 +41,11 @@ struct Snapshot {
     Index size() const { return static_cast<Index>(x.size()); }
 };
 
+/// 3×3 tensors as N×9 rows, row-major (σ_xx, σ_xy, σ_xz, σ_yx, …), the files' layout (Eigen
+/// stores column-major); and back. Exact copies, no arithmetic.
+std::vector<double> rowMajor(const std::vector<Mat3>& m);
+std::vector<Mat3> fromRowMajor(const std::vector<double>& rows);
+
 /// The broken bonds of a state as particle pairs (a, b) with a < b, in CSR order.
 std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
                                               const std::vector<std::uint8_t>& bondIntact);

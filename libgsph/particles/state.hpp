@@ -27,6 +27,9 @@ struct EnergyLedger {
 struct State {
     double time = 0.0;
     double dt = 0.0;  ///< the step the integrator takes next
+    /// Δt_0 of the run (set when the integrator starts): the reference of the time-step
+    /// collapse guard (SolverOptions::minTimeStepRatio).
+    double initialDt = 0.0;
     long step = 0;
     std::vector<Vec3> x;                ///< current position [m]
     std::vector<Vec3> v;                ///< velocity [m/s]
@@ -57,23 +60,33 @@ struct State {
     void forEachArray(Visitor&& visit) const {
         visitArrays(*this, visit);
     }
-    /// Calls visit(name, value) for every scalar of the state (time, step, ledger), in order.
+    /// Calls visit(name, value) for every scalar of the state (time, step, ledger), in order;
+    /// value is a double or a long. Like forEachArray, the one list checkpoints go through.
     template <class Visitor>
     void forEachScalar(Visitor&& visit) {
-        visit("time", time);
-        visit("dt", dt);
-        visit("step", step);
-        visit("ledger/viscous_work", ledger.viscousWork);
-        visit("ledger/hourglass_work", ledger.hourglassWork);
-        visit("ledger/boundary_work", ledger.boundaryWork);
-        visit("ledger/plastic_work", ledger.plasticWork);
-        visit("ledger/damage_dissipation", ledger.damageDissipation);
-        visit("ledger/viscous_power", ledger.viscousPower);
-        visit("ledger/hourglass_power", ledger.hourglassPower);
-        visit("ledger/boundary_power", ledger.boundaryPower);
+        visitScalars(*this, visit);
+    }
+    template <class Visitor>
+    void forEachScalar(Visitor&& visit) const {
+        visitScalars(*this, visit);
     }
 
   private:
+    template <class Self, class Visitor>
+    static void visitScalars(Self& s, Visitor& visit) {
+        visit("time", s.time);
+        visit("dt", s.dt);
+        visit("initial_dt", s.initialDt);
+        visit("step", s.step);
+        visit("ledger/viscous_work", s.ledger.viscousWork);
+        visit("ledger/hourglass_work", s.ledger.hourglassWork);
+        visit("ledger/boundary_work", s.ledger.boundaryWork);
+        visit("ledger/plastic_work", s.ledger.plasticWork);
+        visit("ledger/damage_dissipation", s.ledger.damageDissipation);
+        visit("ledger/viscous_power", s.ledger.viscousPower);
+        visit("ledger/hourglass_power", s.ledger.hourglassPower);
+        visit("ledger/boundary_power", s.ledger.boundaryPower);
+    }
     template <class Self, class Visitor>
     static void visitArrays(Self& s, Visitor& visit) {
         visit("x", s.x);
