@@ -28,6 +28,7 @@ struct BodySetup {
     std::vector<Material> materials;
     std::vector<double> density;
     std::vector<Vec3> velocity;
+    std::vector<double> bondStretch;  ///< εmax per body (0: its bonds never break)
 };
 
 BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
@@ -57,6 +58,7 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         setup.materials.push_back(*m->material);
         setup.density.push_back(m->elastic.density);
         setup.velocity.push_back(spec->velocity);
+        setup.bondStretch.push_back(m->bondStretch);
     }
     return setup;
 }
@@ -161,6 +163,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     solverOptions.viscosity = c.viscosity;
     solverOptions.hourglass = c.hourglass;
     solverOptions.minTimeStepRatio = c.minDtRatio;
+    solverOptions.bondStretch = bodies.bondStretch;
     Simulation sim(buildReference(file, bodies.density, c.kappa), std::move(bodies.materials),
                    solverOptions);
     for (VelocityConstraint& vc : constraints) sim.constrain(std::move(vc));

@@ -349,9 +349,9 @@ double VelocityVerlet::stableTimeStep(const State& state) const {
     const auto iw = static_cast<std::size_t>(worst);
     char detail[200];
     std::snprintf(detail, sizeof detail,
-                  "time step collapsed: Δt = %.3e s < %.3g × Δt0 = %.3e s (spacing %.3e m, "
-                  "wave speed %.3e m/s, |v| = %.3e m/s): ",
-                  dt, options_.minTimeStepRatio, floor, work_.lengthScale[iw],
+                  "time step collapsed: Δt = %.3e s, below %.3g × Δt0 (Δt0 = %.3e s; spacing "
+                  "%.3e m, wave speed %.3e m/s, |v| = %.3e m/s): ",
+                  dt, options_.minTimeStepRatio, state.initialDt, work_.lengthScale[iw],
                   work_.factors.soundSpeed[iw], state.v[iw].norm());
     throw NumericalError(detail + particleAndTime(ref_, worst, state.time), worst, state.time);
 }

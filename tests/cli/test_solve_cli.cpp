@@ -64,6 +64,10 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"file_and_constants.toml", "unknown key 'density' in [[material]] (a [[material]] with",
          8},
         {"negative_bond_stretch.toml", "'bond_stretch' in [[material]] must be ≥ 0", 10},
+        {"negative_checkpoint_interval.toml", "'checkpoint_interval' in [run] must be ≥ 0", 4},
+        {"checkpoint_interval_not_a_number.toml", "'checkpoint_interval' in [run] must be a number",
+         5},
+        {"min_dt_ratio_not_below_one.toml", "'min_dt_ratio' in [run] must be < 1 (0 = off)", 4},
     };
     std::size_t fixtures = 0;
     for (const auto& e : fs::directory_iterator(kSource / "tests/data/bad_cases"))

@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: MIT
+// Checkpoints and the run guards in the library (issue #6): a checkpoint holds every array
+// and scalar of the State bit for bit; a Simulation resumed from it steps exactly as the one
+// that wrote it; a state of another shape is refused; a non-finite stress stops the step with
+// a NumericalError naming the particle, its reference position and the time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <memory>
+
+#include "core/error.hpp"
+#include "io/checkpoint.hpp"
+#include "simulation.hpp"
+#include "spaces/analytic_maps.hpp"
+#include "support/lattice_fixtures.hpp"
+#include "tools/temp_dir.hpp"
+
+namespace gsph {
+namespace {
+
+template <class T>
+bool sameBits(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+// Every array and scalar of two states, bit for bit (names of those that differ).
+std::string differences(const State& a, const State& b) {
+    std::vector<const void*> arrays;
+    std::vector<std::size_t> bytes;
+    b.forEachArray([&](const char*, const auto& array) {
+        arrays.push_back(array.data());
+        bytes.push_back(array.size() * sizeof(array[0]));
+    });
+    std::string out;
+    std::size_t i = 0;
+    a.forEachArray([&](const char* name, const auto& array) {
+        const std::size_t n = array.size() * sizeof(array[0]);
+        if (n != bytes[i] || std::memcmp(array.data(), arrays[i], n) != 0)
+            out += name + std::string(" ");
+        ++i;
+    });
+    std::vector<double> scalars;
+    b.forEachScalar([&](const char*, const auto& v) { scalars.push_back(static_cast<double>(v)); });
+    i = 0;
+    a.forEachScalar([&](const char* name, const auto& v) {
+        const double x = static_cast<double>(v);
+        if (std::memcmp(&x, &scalars[i++], sizeof x) != 0) out += name + std::string(" ");
+    });
+    return out;
+}
+
+TEST(Checkpoint, RoundTripKeepsEveryArrayAndScalarBitForBit) {
+    // Distinct, non-round values in every entry (through the visitors, so a field added to
+    // State later is covered too).
+    State s;
+    double next = 0.1234567890123;
+    const auto value = [&] {
+        return next = std::fmod(next * 7.77 + 0.3141592653589793, 97.0) - 40;
+    };
+    s.forEachArray([&](const char*, auto& array) {
+        array.resize(37);
+        for (auto& e : array) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(e)>, std::uint8_t>) {
+                e = static_cast<std::uint8_t>(value() > 0.0);
+            } else if constexpr (std::is_same_v<std::decay_t<decltype(e)>, double>) {
+                e = value();
+            } else {
+                for (int k = 0; k < e.size(); ++k) e.data()[k] = value();
+            }
+        }
+    });
+    long counter = 0;
+    s.forEachScalar([&](const char*, auto& v) {
+        v = static_cast<std::decay_t<decltype(v)>>(value() + 1e3 * ++counter);
+    });
+    s.step = 123456789;
+    RunRecord run;
+    run.inputs = {{"case", "case.toml", "abc"}, {"particles", "p.h5", "def"}};
+    run.counters = {{"next_output", 7}, {"next_snapshot", 8}};
+    run.texts = {{"history", "time,step\n0,0\n"}};
+    test::TempDir dir;
+    Provenance p;
+    p.tool = "test";
+    writeCheckpoint(dir / "c.h5", s, run, p);
+    const Checkpoint c = readCheckpoint(dir / "c.h5");
+    EXPECT_EQ(differences(c.state, s), "");
+    EXPECT_EQ(std::memcmp(&c.state.ledger, &s.ledger, sizeof(EnergyLedger)), 0)
+        << "every ledger entry is a visited scalar";
+    EXPECT_EQ(c.state.step, 123456789);
+    ASSERT_EQ(c.run.inputs.size(), 2u);
+    EXPECT_EQ(c.run.inputs[1].file, "p.h5");
+    EXPECT_EQ(c.run.inputs[1].sha256, "def");
+    EXPECT_EQ(c.run.counters, run.counters);
+    EXPECT_EQ(c.run.texts, run.texts);
+    EXPECT_EQ(c.provenance.tool, "test");
+    EXPECT_EQ(dir.entries(), 1) << "no temporary file left";
+}
+
+// A bar of Johnson–Cook steel with damage and brittle bonds, one end pulled fast, the other
+// end struck: plastic flow, failing particles and broken bonds.
+std::unique_ptr<Simulation> makeRun(bool plastic = true) {
+    JohnsonCookParams p;
+    p.yieldStress = 2e6;
+    p.hardeningModulus = 50e6;
+    p.hardeningExponent = 0.3;
+    p.strainRateCoefficient = 0.02;
+    p.meltingTemperature = 1800.0;
+    p.specificHeat = 450.0;
+    const ElasticConstants e(7800.0, 200e9, 0.3);
+    const Material steel =
+        JohnsonCook(e, p, EquationOfState::mieGruneisen(7800.0, {4570.0, 1.49, 1.93}),
+                    JohnsonCookDamage{{0.0, 0.001, 0.0, 0.0, 0.0}});
+    SolverOptions options;
+    options.viscosity = {1.0, 1.0};
+    options.hourglass = 0.1;
+    options.bondStretch = {0.004};
+    auto sim = std::make_unique<Simulation>(
+        testing::builtReference(gradedBoxMap(Vec3(0.2, 0.05, 0.05), {}), 3, {24, 6, 6}),
+        std::vector<Material>{plastic ? steel : Material(HypoElastic(e))}, options);
+    std::vector<Index> end;
+    for (Index a = 0; a < sim->reference().size(); ++a)
+        if (sim->reference().X[static_cast<std::size_t>(a)][0] > 0.19) end.push_back(a);
+    sim->constrain({"end", end, [](double, const Vec3&) { return Vec3(60.0, 0, 0); }});
+    sim->setVelocity([](const Vec3& X) { return Vec3(X[0] < 0.02 ? 40.0 : 0.0, 0.0, 0.0); });
+    return sim;
+}
+
+long brokenEntries(const State& s) {
+    return std::count(s.bondIntact.begin(), s.bondIntact.end(), std::uint8_t{0});
+}
+
+TEST(Checkpoint, ResumedSimulationStepsBitIdentically) {
+    const auto a = makeRun();
+    for (int i = 0; i < 80; ++i) a->step();
+    const auto b = makeRun();
+    for (int i = 0; i < 30; ++i) b->step();
+    test::TempDir dir;
+    writeCheckpoint(dir / "c.h5", b->state(), {}, {});
+    const long brokenAtCheckpoint = brokenEntries(b->state());
+    const auto resumed = makeRun();
+    resumed->resume(readCheckpoint(dir / "c.h5").state, "c.h5");
+    for (int i = 0; i < 50; ++i) resumed->step();
+    EXPECT_EQ(differences(resumed->state(), a->state()), "");
+    // The run exercised what a restart must carry: plastic history, damage, broken bonds
+    // before and after the checkpoint.
+    EXPECT_GT(brokenAtCheckpoint, 0);
+    EXPECT_GT(brokenEntries(a->state()), brokenAtCheckpoint);
+    EXPECT_GT(a->state().ledger.plasticWork, 0.0);
+    EXPECT_GT(a->state().ledger.damageDissipation, 0.0);
+}
+
+TEST(Checkpoint, ResumeRefusesAStateOfAnotherShape) {
+    const auto small = makeRun();
+    State wrong = State::atRest(std::vector<Vec3>(10, Vec3::Zero()), 3);
+    wrong.dt = 1e-9;
+    try {
+        small->resume(wrong, "old.h5");
+        FAIL() << "a 10-particle state resumed a larger run";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("old.h5: state array 'x' has 10 entries"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
+TEST(Guards, NonFiniteStressStopsTheStepNamingTheParticle) {
+    // No valid case file gives a NaN (the case reader refuses non-finite numbers), so the
+    // guard is tested here: a NaN in one particle's stress — the elastic stress update is
+    // local, so only that particle turns non-finite.
+    const auto sim = makeRun(false);
+    for (int i = 0; i < 3; ++i) sim->step();
+    const Index a = 100;
+    sim->state().cauchy[a](0, 1) = std::numeric_limits<double>::quiet_NaN();
+    const double t = sim->state().time + sim->state().dt;
+    try {
+        sim->step();
+        FAIL() << "a NaN stress went through a step";
+    } catch (const NumericalError& e) {
+        EXPECT_EQ(e.particle(), a);
+        EXPECT_DOUBLE_EQ(e.time(), t);
+        const std::string what = e.what();
+        EXPECT_NE(what.find("non-finite deformation or stress (NaN/Inf): particle 100 at X = ("),
+                  std::string::npos)
+            << what;
+        char X[80];
+        const Vec3& Xa = sim->reference().X[a];
+        std::snprintf(X, sizeof X, "(%.6g, %.6g, %.6g) m", Xa[0], Xa[1], Xa[2]);
+        EXPECT_NE(what.find(X), std::string::npos) << what;
+    }
+}
+
+}  // namespace
+}  // namespace gsph
