@@ -13,6 +13,9 @@ class ProgressBar {
   public:
     /// `enabled` false: every call does nothing.
     ProgressBar(bool enabled, double endTime, long particles);
+    ~ProgressBar() { clear(); }
+    ProgressBar(const ProgressBar&) = delete;
+    ProgressBar& operator=(const ProgressBar&) = delete;
 
     /// Where this invocation starts (t and step of the first state; a restart's are > 0).
     void start(double time, long step);

@@ -175,6 +175,10 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     History history(options.runDir / "history.csv");
     ProgressBar progress(options.progress, c.endTime, ref.size());
     log.beforePrint = [&] { progress.clear(); };
+    struct DetachBar {  // the log outlives this run's progress bar, also on an exception
+        RunLog& log;
+        ~DetachBar() { log.beforePrint = nullptr; }
+    } detachBar{log};
     RunSummary summary;
     summary.particles = ref.size();
     double totalMass = 0, meshMass = 0;

@@ -14,6 +14,7 @@
 #include "io/checkpoint.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/johnson_cook_materials.hpp"
 #include "support/lattice_fixtures.hpp"
 #include "tools/temp_dir.hpp"
 
@@ -101,17 +102,8 @@ TEST(Checkpoint, RoundTripKeepsEveryArrayAndScalarBitForBit) {
 // A bar of Johnson–Cook steel with damage and brittle bonds, one end pulled fast, the other
 // end struck: plastic flow, failing particles and broken bonds.
 std::unique_ptr<Simulation> makeRun(bool plastic = true) {
-    JohnsonCookParams p;
-    p.yieldStress = 2e6;
-    p.hardeningModulus = 50e6;
-    p.hardeningExponent = 0.3;
-    p.strainRateCoefficient = 0.02;
-    p.meltingTemperature = 1800.0;
-    p.specificHeat = 450.0;
+    const Material steel = testing::softFailingSteel();
     const ElasticConstants e(7800.0, 200e9, 0.3);
-    const Material steel =
-        JohnsonCook(e, p, EquationOfState::mieGruneisen(7800.0, {4570.0, 1.49, 1.93}),
-                    JohnsonCookDamage{{0.0, 0.001, 0.0, 0.0, 0.0}});
     SolverOptions options;
     options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;

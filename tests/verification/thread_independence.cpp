@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/johnson_cook_materials.hpp"
 
 namespace gsph {
 namespace {
@@ -60,17 +61,7 @@ TEST(ThreadIndependence, OneAndTwoThreadsGiveBitIdenticalStates) {
 TEST(ThreadIndependence, PlasticRunsAreBitIdenticalToo) {
     // Johnson–Cook with damage, heating and the Mie–Grüneisen pressure: the history arrays and
     // the ledger's plastic work and failure loss do not depend on the thread count either.
-    JohnsonCookParams p;
-    p.yieldStress = 2e6;  // low, so that the 40 m/s impact flows plastically at once
-    p.hardeningModulus = 50e6;
-    p.hardeningExponent = 0.3;
-    p.strainRateCoefficient = 0.02;
-    p.meltingTemperature = 1800.0;
-    p.specificHeat = 450.0;
-    const ElasticConstants e(7800.0, 200e9, 0.3);
-    const Material plastic =
-        JohnsonCook(e, p, EquationOfState::mieGruneisen(7800.0, {4570.0, 1.49, 1.93}),
-                    JohnsonCookDamage{{0.0, 0.001, 0.0, 0.0, 0.0}});
+    const Material plastic = testing::softFailingSteel();
     EnergyReport e1, e2;
     const State s1 = runWithThreads(1, &e1, plastic, 40);
     const State s2 = runWithThreads(2, &e2, plastic, 40);
