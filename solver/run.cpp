@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 
 #include "core/error.hpp"
@@ -107,7 +108,7 @@ void checkInputs(const std::vector<CheckpointInput>& then, const std::vector<Che
         if (!old) throw InputError(checkpoint.string() + ": records no " + current.role + " file");
         if (old->sha256 != current.sha256)
             throw InputError(checkpoint.string() + ": " + current.role + " file '" + current.file +
-                             "' differs from the one the checkpoint was written " + "with ('" +
+                             "' differs from the one the checkpoint was written with ('" +
                              old->file + "', sha256 " + old->sha256.substr(0, 12) + "…, now " +
                              current.sha256.substr(0, 12) + "…); a restart needs the same " +
                              current.role + " file");
@@ -121,42 +122,113 @@ long counter(const RunRecord& run, const std::string& name, const std::filesyste
     return static_cast<long>(it->second);
 }
 
-RunRecord recordOf(const std::vector<CheckpointInput>& inputs, const Schedule& schedule,
-                   const History& history) {
-    RunRecord r;
-    r.inputs = inputs;
-    r.counters["next_output"] = schedule.nextOutput;
-    r.counters["next_snapshot"] = schedule.nextSnapshot;
-    r.counters["next_checkpoint"] = schedule.nextCheckpoint;
-    r.texts["history"] = history.text();
-    return r;
-}
-
 std::string format(const char* fmt, double a, long b) {
     char line[160];
     std::snprintf(line, sizeof line, fmt, a, b);
     return line;
 }
 
-}  // namespace
+// The run folder's files and the schedule that says when they are written: snapshots,
+// history.csv, checkpoint.h5, run.log, and the progress bar between them.
+class RunOutputs {
+  public:
+    RunOutputs(const CaseConfig& c, const RunOptions& options, const Reference& ref,
+               std::vector<CheckpointInput> inputs)
+        : c_(c),
+          options_(options),
+          log_(*options.log),
+          ref_(ref),
+          inputs_(std::move(inputs)),
+          provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
+          history_(options.runDir / "history.csv"),
+          progress_(options.progress, c.endTime, ref.size()) {
+        log_.beforePrint = [this] { progress_.clear(); };
+    }
+    ~RunOutputs() { log_.beforePrint = nullptr; }  // the log outlives the progress bar
+    RunOutputs(const RunOutputs&) = delete;
+    RunOutputs& operator=(const RunOutputs&) = delete;
 
-RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
-    RunLog& log = *options.log;
-    ParticleFile file;
-    try {
-        file = readParticleFile(c.particles);
-    } catch (const Error& e) {
-        throw InputError(c.caseFile.string() + ":" + std::to_string(c.particlesLine) +
-                         ": particle file: " + e.what());
+    Schedule schedule;
+    ProgressBar& progress() { return progress_; }
+    std::filesystem::path checkpointPath() const { return options_.runDir / kCheckpointName; }
+    int snapshotsWritten() const { return snapshots_; }
+
+    /// A history row and a snapshot of `s` (a scheduled one, or the last of a stopped run).
+    void snapshot(const State& s, const EnergyReport& energy) {
+        history_.add(s, energy);
+        writeSnapshotOnly(s);
     }
-    const std::vector<CheckpointInput> inputs = inputsOf(c);
-    // A restart is checked before anything is built: the same case and particle file.
-    std::optional<Checkpoint> checkpoint;
-    if (!options.restart.empty()) {
-        checkpoint = readCheckpoint(options.restart);
-        checkInputs(checkpoint->run.inputs, inputs, options.restart);
+    /// A snapshot without a history row (the failing state of a numerical breakdown).
+    void writeSnapshotOnly(const State& s) {
+        char name[64];
+        std::snprintf(name, sizeof name, "snapshot_%06ld.h5", schedule.nextSnapshot++);
+        writeSnapshot(options_.runDir / name, ref_, s, provenance_);
+        history_.flush();
+        ++snapshots_;
+        log_.add(std::string(name) + format(": t = %.6e s, step %ld", s.time, s.step));
+        log_.flush();
     }
-    BodySetup bodies = matchBodies(c, file);
+    void checkpoint(const State& s) {
+        const auto t0 = Clock::now();
+        RunRecord r;
+        r.inputs = inputs_;
+        r.counters["next_output"] = schedule.nextOutput;
+        r.counters["next_snapshot"] = schedule.nextSnapshot;
+        r.counters["next_checkpoint"] = schedule.nextCheckpoint;
+        r.texts["history"] = history_.text();
+        writeCheckpoint(checkpointPath(), s, r, provenance_);
+        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+        char line[160];
+        std::snprintf(line, sizeof line, "%s: t = %.6e s, step %ld (%.1f kB, written in %.3f s)",
+                      kCheckpointName, s.time, s.step,
+                      static_cast<double>(std::filesystem::file_size(checkpointPath())) / 1e3,
+                      seconds);
+        log_.add(line);
+        log_.flush();
+    }
+    /// The schedule and history a checkpoint stored.
+    void restore(const RunRecord& run) {
+        const std::filesystem::path& file = options_.restart;
+        schedule.nextOutput = counter(run, "next_output", file);
+        schedule.nextSnapshot = counter(run, "next_snapshot", file);
+        schedule.nextCheckpoint = counter(run, "next_checkpoint", file);
+        const auto text = run.texts.find("history");
+        if (text == run.texts.end())
+            throw InputError(file.string() + ": checkpoint lacks the history");
+        history_.restore(text->second, file.string());
+    }
+    /// After every step: the progress bar, and a checkpoint at the first step at or past each
+    /// m·checkpoint_interval (none at the end time: the run is done then).
+    void afterStep(const State& s) {
+        progress_.update(s.time, s.step);
+        if (c_.checkpointInterval <= 0.0 || s.time >= c_.endTime - reachedTolerance()) return;
+        const auto due = [&] {
+            return s.time >= static_cast<double>(schedule.nextCheckpoint) * c_.checkpointInterval -
+                                 reachedTolerance();
+        };
+        if (!due()) return;
+        while (due()) ++schedule.nextCheckpoint;
+        checkpoint(s);
+    }
+    /// Tolerance of "this time is reached", as Simulation::advanceTo lands on its end time.
+    double reachedTolerance() const { return 1e-12 * std::max(1.0, c_.endTime); }
+
+  private:
+    const CaseConfig& c_;
+    const RunOptions& options_;
+    RunLog& log_;
+    const Reference& ref_;
+    std::vector<CheckpointInput> inputs_;
+    Provenance provenance_;
+    History history_;
+    ProgressBar progress_;
+    int snapshots_ = 0;
+};
+
+// The case's simulation, built from the case and its particle file (constraints set, not
+// started).
+std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleFile& file,
+                                            BodySetup& bodies) {
     std::vector<VelocityConstraint> constraints = matchSets(c, file);
     SolverOptions solverOptions;
     solverOptions.cfl = c.cfl;
@@ -164,23 +236,13 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     solverOptions.hourglass = c.hourglass;
     solverOptions.minTimeStepRatio = c.minDtRatio;
     solverOptions.bondStretch = bodies.bondStretch;
-    Simulation sim(buildReference(file, bodies.density, c.kappa), std::move(bodies.materials),
-                   solverOptions);
-    for (VelocityConstraint& vc : constraints) sim.constrain(std::move(vc));
-    const Reference& ref = sim.reference();
+    auto sim = std::make_unique<Simulation>(buildReference(file, bodies.density, c.kappa),
+                                            std::move(bodies.materials), solverOptions);
+    for (VelocityConstraint& vc : constraints) sim->constrain(std::move(vc));
+    return sim;
+}
 
-    std::filesystem::create_directories(options.runDir);
-    const Provenance provenance = provenanceOf("gsph-solve", kVersion, c.caseFile);
-    const std::filesystem::path checkpointPath = options.runDir / kCheckpointName;
-    History history(options.runDir / "history.csv");
-    ProgressBar progress(options.progress, c.endTime, ref.size());
-    log.beforePrint = [&] { progress.clear(); };
-    struct DetachBar {  // the log outlives this run's progress bar, also on an exception
-        RunLog& log;
-        ~DetachBar() { log.beforePrint = nullptr; }
-    } detachBar{log};
-    RunSummary summary;
-    summary.particles = ref.size();
+std::string sizeLine(const Reference& ref) {
     double totalMass = 0, meshMass = 0;
     for (Index a = 0; a < ref.size(); ++a) {
         const auto ia = static_cast<std::size_t>(a);
@@ -191,43 +253,54 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     std::snprintf(line, sizeof line,
                   "particles %d, pairs %d, mass %.6g kg (ρ0 × mesh volume: %.6g kg)", ref.size(),
                   ref.pairs.pairs(), totalMass, meshMass);
+    return line;
+}
+
+void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
+    char line[320];
+    std::snprintf(line, sizeof line,
+                  "done: t = %.4e s, %ld steps, %d snapshots, %.2f s wall, %.3e particle-steps/s",
+                  summary.time, summary.steps, summary.snapshots, summary.wallSeconds,
+                  summary.particleStepsPerSecond);
     log.add(line);
+    std::snprintf(line, sizeof line,
+                  "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
+                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J",
+                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork,
+                  e.plasticWork, e.damageDissipation);
+    log.add(line);
+}
 
-    Schedule schedule;
-    const auto snapshot = [&](const State& s) {
-        char name[64];
-        std::snprintf(name, sizeof name, "snapshot_%06ld.h5", schedule.nextSnapshot++);
-        writeSnapshot(options.runDir / name, ref, s, provenance);
-        history.flush();
-        ++summary.snapshots;
-        log.add(std::string(name) + format(": t = %.6e s, step %ld", s.time, s.step));
-        log.flush();
-    };
-    const auto writeCheckpointNow = [&](const State& s) {
-        const auto t0 = Clock::now();
-        writeCheckpoint(checkpointPath, s, recordOf(inputs, schedule, history), provenance);
-        const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-        std::snprintf(line, sizeof line, "%s: t = %.6e s, step %ld (%.1f kB, written in %.3f s)",
-                      kCheckpointName, s.time, s.step,
-                      static_cast<double>(std::filesystem::file_size(checkpointPath)) / 1e3,
-                      seconds);
-        log.add(line);
-        log.flush();
-    };
+}  // namespace
 
+RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
+    ParticleFile file;
+    try {
+        file = readParticleFile(c.particles);
+    } catch (const Error& e) {
+        throw InputError(c.caseFile.string() + ":" + std::to_string(c.particlesLine) +
+                         ": particle file: " + e.what());
+    }
+    std::vector<CheckpointInput> inputs = inputsOf(c);
+    // A restart is checked before anything is built: the same case and particle file.
+    std::optional<Checkpoint> checkpoint;
+    if (!options.restart.empty()) {
+        checkpoint = readCheckpoint(options.restart);
+        checkInputs(checkpoint->run.inputs, inputs, options.restart);
+    }
+    BodySetup bodies = matchBodies(c, file);
+    const std::unique_ptr<Simulation> simulation = buildSimulation(c, file, bodies);
+    Simulation& sim = *simulation;
+    const Reference& ref = sim.reference();
+    std::filesystem::create_directories(options.runDir);
+    RunOutputs out(c, options, ref, std::move(inputs));
+    options.log->add(sizeLine(ref));
     if (checkpoint) {
-        const RunRecord& run = checkpoint->run;
-        schedule.nextOutput = counter(run, "next_output", options.restart);
-        schedule.nextSnapshot = counter(run, "next_snapshot", options.restart);
-        schedule.nextCheckpoint = counter(run, "next_checkpoint", options.restart);
-        const auto text = run.texts.find("history");
-        if (text == run.texts.end())
-            throw InputError(options.restart.string() + ": checkpoint lacks the history");
-        history.restore(text->second, options.restart.string());
+        out.restore(checkpoint->run);
         sim.resume(std::move(checkpoint->state), options.restart.string());
         checkpoint.reset();
-        log.add("restart from " + options.restart.string() +
-                format(": t = %.6e s, step %ld", sim.state().time, sim.state().step));
+        options.log->add("restart from " + options.restart.string() +
+                         format(": t = %.6e s, step %ld", sim.state().time, sim.state().step));
     } else {
         std::vector<Vec3> initial(static_cast<std::size_t>(ref.size()));
         for (Index a = 0; a < ref.size(); ++a)
@@ -235,23 +308,11 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                 bodies.velocity[static_cast<std::size_t>(ref.body[static_cast<std::size_t>(a)])];
         sim.setVelocities(initial);
         sim.start();
-        history.add(sim.state(), sim.energy());
-        snapshot(sim.state());
+        out.snapshot(sim.state(), sim.energy());
     }
 
-    // Tolerance of "this time is reached", as Simulation::advanceTo lands on its end time.
-    const double reachedTolerance = 1e-12 * std::max(1.0, c.endTime);
-    const auto afterStep = [&](const State& s) {
-        progress.update(s.time, s.step);
-        if (c.checkpointInterval <= 0.0 || s.time >= c.endTime - reachedTolerance) return;
-        const auto due = [&] {
-            return s.time >= static_cast<double>(schedule.nextCheckpoint) * c.checkpointInterval -
-                                 reachedTolerance;
-        };
-        if (!due()) return;
-        while (due()) ++schedule.nextCheckpoint;
-        writeCheckpointNow(s);
-    };
+    RunSummary summary;
+    summary.particles = ref.size();
     const auto stop = [&](const State& s) {
         if (const int signal = options.stopSignal ? options.stopSignal() : 0) {
             summary.stopReason = signalName(signal);
@@ -264,57 +325,46 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         return false;
     };
     const long firstStep = sim.state().step;
-    progress.start(sim.state().time, firstStep);
+    out.progress().start(sim.state().time, firstStep);
     const auto t0 = Clock::now();
     try {
-        for (bool last = false; !last; ++schedule.nextOutput) {
-            const double target =
-                std::min(c.endTime, static_cast<double>(schedule.nextOutput) * c.outputInterval);
+        for (bool last = false; !last; ++out.schedule.nextOutput) {
+            const double target = std::min(
+                c.endTime, static_cast<double>(out.schedule.nextOutput) * c.outputInterval);
             last = target >= c.endTime * (1 - 1e-12);
-            if (!sim.advanceTo(target, afterStep, stop)) {
-                // Interrupted: the checkpoint resumes this interval; the snapshot shows the
-                // state (its number is rewritten by the restarted run's scheduled snapshot).
-                writeCheckpointNow(sim.state());
-                history.add(sim.state(), sim.energy());
-                snapshot(sim.state());
+            if (!sim.advanceTo(
+                    target, [&](const State& s) { out.afterStep(s); }, stop)) {
+                // Stopped: the checkpoint resumes this interval; the snapshot shows the state
+                // (the restarted run rewrites its number with the scheduled snapshot).
+                out.checkpoint(sim.state());
+                out.snapshot(sim.state(), sim.energy());
                 summary.interrupted = true;
-                summary.checkpoint = checkpointPath;
+                summary.checkpoint = out.checkpointPath();
                 break;
             }
-            history.add(sim.state(), sim.energy());
-            snapshot(sim.state());
+            out.snapshot(sim.state(), sim.energy());
         }
     } catch (const NumericalError& e) {
-        snapshot(sim.state());
-        log.add(std::string("stopped: ") + e.what() + "; final state written");
+        out.writeSnapshotOnly(sim.state());
+        options.log->add(std::string("stopped: ") + e.what() + "; final state written");
         throw;
     }
-    progress.clear();
+    out.progress().clear();
     summary.wallSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
     summary.steps = sim.state().step;
     summary.time = sim.state().time;
+    summary.snapshots = out.snapshotsWritten();
     summary.particleStepsPerSecond = static_cast<double>(summary.steps - firstStep) *
                                      static_cast<double>(summary.particles) /
                                      std::max(summary.wallSeconds, 1e-9);
     if (summary.interrupted) {
-        log.add("interrupted (" + summary.stopReason +
-                format("): t = %.6e s, step %ld; restart with --restart ", summary.time,
-                       summary.steps) +
-                checkpointPath.string());
-        return summary;
+        options.log->add("interrupted (" + summary.stopReason +
+                         format("): t = %.6e s, step %ld; restart with --restart ", summary.time,
+                                summary.steps) +
+                         summary.checkpoint.string());
+    } else {
+        logEnd(*options.log, summary, sim.energy());
     }
-    const EnergyReport e = sim.energy();
-    std::snprintf(line, sizeof line,
-                  "done: t = %.4e s, %ld steps, %d snapshots, %.2f s wall, %.3e particle-steps/s",
-                  sim.state().time, summary.steps, summary.snapshots, summary.wallSeconds,
-                  summary.particleStepsPerSecond);
-    log.add(line);
-    std::snprintf(line, sizeof line,
-                  "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
-                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J",
-                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork,
-                  e.plasticWork, e.damageDissipation);
-    log.add(line);
     return summary;
 }
 
