@@ -76,6 +76,7 @@ class Restart : public ::testing::Test {
         const fs::path a = dir_ / "A", b = dir_ / "B";
         const auto ra = runCommand(solve(caseFile, particles_, a));
         EXPECT_EQ(ra.status, 0) << ra.err;
+        EXPECT_EQ(ra.out.find('\r'), std::string::npos) << "no progress bar into a pipe";
         const auto rb = runCommand(
             solve(caseFile, particles_, b, "--stop-after-steps " + std::to_string(stopStep)));
         EXPECT_EQ(rb.status, kExitInterrupted) << rb.err;
@@ -302,6 +303,20 @@ TEST_F(Restart, CollapsedTimeStepStopsTheRunNamingTheParticle) {
     EXPECT_LT(std::stod(m[1]), 1e-3 * std::stod(m[2]));
     EXPECT_GE(particleNamedIn(r.err), 0) << r.err;
     EXPECT_TRUE(fs::exists(dir_ / "run/snapshot_000001.h5")) << "final snapshot";
+}
+
+TEST_F(Restart, ProgressBarShowsOnATerminal) {
+    // script(1) runs the solver on a pseudo-terminal: the bar shows simulated time against the
+    // end time, both rates and the ETA (in a pipe it stays quiet: interruptAndRestart).
+    const auto r = runCommand("script -qec " + quote(solve(kSampleCase, particles_, dir_ / "tty")) +
+                              " /dev/null");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::smatch m;
+    const std::regex bar(
+        "\\r\\[#* *\\] +[0-9.]+%  t = [-+.e0-9]+ / 3\\.000e-05 s  [0-9]+ steps/s  "
+        "[-+.e0-9]+ particle-steps/s  ETA [0-9]+ s");
+    EXPECT_TRUE(std::regex_search(r.out, m, bar)) << r.out.substr(0, 2000);
+    EXPECT_NE(r.out.find("done: t = 3.0000e-05 s"), std::string::npos);
 }
 
 }  // namespace
