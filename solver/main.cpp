@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
         log.record(std::string("error: ") + e.what());
         status = kExitNumerical;
-    } catch (const gsph::Error& e) {
+    } catch (const std::exception& e) {  // gsph::Error, and e.g. a folder that cannot be made
         std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
         log.record(std::string("error: ") + e.what());
         status = kExitError;
