@@ -1,24 +1,34 @@
 // SPDX-License-Identifier: MIT
 // gsph-post: turns a run folder into ParaView files and pictures.
 //
-// Usage:   gsph-post RUNDIR [-o OUTDIR] [--field von_mises|pressure|displacement|velocity|J]
-//                    [--no-pictures]
+// Usage:   gsph-post RUNDIR [-o OUTDIR] [--field NAME] [--times T1,T2,...] [--no-pictures]
+//                    [--no-cracks]
 // Sample:  gsph-post run/graded_bar
-// Description: writes OUTDIR (default RUNDIR/post) with run.pvd + snapshot_NNNNNN.vtu (open
-// run.pvd in ParaView), final_<field>.png (the last snapshot, deformed, coloured by the field)
-// and history.png (the energies of history.csv). Pictures need an X server: without DISPLAY
-// gsph-post re-runs itself under `xvfb-run -a` (package xvfb). Errors: one line, exit code 1.
+//          gsph-post run/graded_bar --field plastic_strain --times 1e-5,3e-5
+// Description: writes OUTDIR (default RUNDIR/post) with
+//   run.pvd + snapshot_NNNNNN.vtu    particles with every field (open run.pvd in ParaView),
+//   cracks.pvd + crack_NNNNNN.vtp    crack surfaces (Voronoi facets of the broken bonds),
+//   FIELD_NNNNNN.png                 the deformed body coloured by FIELD at each of --times
+//                                    (the snapshot nearest to each time), or final_FIELD.png
+//                                    (the last snapshot) without --times,
+//   history.png, momentum.png        energies and momentum of history.csv.
+// Pictures need an X server: without DISPLAY gsph-post re-runs itself under `xvfb-run -a`
+// (package xvfb). Errors: one line naming the file, exit code 1.
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "crack_surface.hpp"
 #include "io/snapshot.hpp"
 #include "pictures.hpp"
 #include "vtk_output.hpp"
@@ -41,52 +51,164 @@ void ensureDisplay(int argc, char** argv) {
         "use --no-pictures");
 }
 
+std::vector<fs::path> snapshotFiles(const std::string& runDir) {
+    if (!fs::is_directory(runDir)) throw gsph::InputError(runDir + ": no such run folder");
+    std::vector<fs::path> snapshots;
+    for (const fs::directory_entry& e : fs::directory_iterator(runDir)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("snapshot_", 0) == 0 && e.path().extension() == ".h5")
+            snapshots.push_back(e.path());
+    }
+    std::sort(snapshots.begin(), snapshots.end());
+    if (snapshots.empty())
+        throw gsph::InputError(runDir + ": no snapshot_*.h5 files (did gsph-solve run?)");
+    return snapshots;
+}
+
+// True if the points span three dimensions (a 2-D run lies in one plane: no crack surfaces).
+bool spansThreeDimensions(const std::vector<gsph::Vec3>& X) {
+    gsph::Vec3 lo = gsph::Vec3::Constant(1e300), hi = gsph::Vec3::Constant(-1e300);
+    for (const gsph::Vec3& p : X) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const gsph::Vec3 extent = hi - lo;
+    return X.size() >= 4 && extent.minCoeff() > 1e-9 * extent.maxCoeff();
+}
+
+// Snapshot index nearest to each requested time (by the snapshots' own /time).
+std::vector<std::size_t> nearestSnapshots(const std::vector<double>& times,
+                                          const std::vector<double>& wanted) {
+    std::vector<std::size_t> out;
+    for (double t : wanted) {
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < times.size(); ++k)
+            if (std::abs(times[k] - t) < std::abs(times[best] - t)) best = k;
+        out.push_back(best);
+    }
+    return out;
+}
+
+double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     CLI::App app{"gsph-post: ParaView files and pictures of a GSPH run"};
     app.set_version_flag("--version", gsph::kVersion);
     std::string runDir, outDir, field = "von_mises";
-    bool noPictures = false;
+    std::vector<double> times;
+    bool noPictures = false, noCracks = false;
     app.add_option("rundir", runDir, "run folder written by gsph-solve")->required();
     app.add_option("-o,--output", outDir, "output folder (default: RUNDIR/post)");
-    app.add_option("--field", field, "field of the picture")
-        ->check(CLI::IsMember({"von_mises", "pressure", "displacement", "velocity", "J"}));
+    app.add_option("--field", field, "field of the pictures")
+        ->check(CLI::IsMember(gsph::post::scalarFieldNames()));
+    app.add_option("--times", times,
+                   "times [s] of the pictures, comma-separated (the nearest snapshots; default: "
+                   "the last)")
+        ->delimiter(',');
     app.add_flag("--no-pictures", noPictures, "write only the ParaView files");
+    app.add_flag("--no-cracks", noCracks, "write no crack surfaces");
     CLI11_PARSE(app, argc, argv);
     try {
-        if (!fs::is_directory(runDir)) throw gsph::InputError(runDir + ": no such run folder");
-        std::vector<fs::path> snapshots;
-        for (const fs::directory_entry& e : fs::directory_iterator(runDir)) {
-            const std::string name = e.path().filename().string();
-            if (name.rfind("snapshot_", 0) == 0 && e.path().extension() == ".h5")
-                snapshots.push_back(e.path());
-        }
-        std::sort(snapshots.begin(), snapshots.end());
-        if (snapshots.empty())
-            throw gsph::InputError(runDir + ": no snapshot_*.h5 files (did gsph-solve run?)");
+        const std::vector<fs::path> snapshots = snapshotFiles(runDir);
         if (!noPictures) ensureDisplay(argc, argv);
         const fs::path out = outDir.empty() ? fs::path(runDir) / "post" : fs::path(outDir);
         fs::create_directories(out);
-        std::vector<std::pair<double, std::string>> series;
+        const auto start = std::chrono::steady_clock::now();
+
+        std::vector<std::pair<double, std::string>> series, crackSeries;
+        std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
+        bool cracksPossible = !noCracks;
+        double crackSetup = 0.0, crackArea = 0.0;
+        std::size_t crackPolygons = 0, unmatched = 0;
+        std::vector<double> snapshotTimes;
         gsph::Snapshot last;
-        for (const fs::path& p : snapshots) {
-            last = gsph::readSnapshot(p);
-            const std::string vtu = p.stem().string() + ".vtu";
-            gsph::post::writeVtu(out / vtu, last);
-            series.emplace_back(last.time, vtu);
+        for (std::size_t k = 0; k < snapshots.size(); ++k) {
+            const fs::path& p = snapshots[k];
+            gsph::Snapshot snap = gsph::readSnapshot(p);
+            if (k > 0 && snap.size() != last.size())
+                throw gsph::InputError(p.string() + ": " + std::to_string(snap.size()) +
+                                       " particles, the run's first snapshot has " +
+                                       std::to_string(last.size()));
+            const std::string stem = p.stem().string();
+            const std::string vtu = stem + ".vtu";
+            gsph::post::writeVtu(out / vtu, snap);
+            series.emplace_back(snap.time, vtu);
+            if (cracksPossible) {
+                gsph::post::CrackSurface surface;
+                if (!snap.brokenBonds.empty()) {
+                    if (!cracks) {
+                        if (!spansThreeDimensions(snap.X)) {
+                            std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
+                            cracksPossible = false;
+                        } else {
+                            const auto t0 = std::chrono::steady_clock::now();
+                            cracks = std::make_unique<gsph::post::CrackSurfaces>(snap.X);
+                            crackSetup = seconds(t0);
+                        }
+                    }
+                    if (cracks) surface = cracks->surface(snap);
+                }
+                if (cracksPossible) {
+                    const std::string vtp =
+                        "crack_" + stem.substr(std::string("snapshot_").size()) + ".vtp";
+                    gsph::post::writeVtp(out / vtp, surface);
+                    crackSeries.emplace_back(snap.time, vtp);
+                    crackArea = surface.totalReferenceArea();
+                    crackPolygons = surface.polygons();
+                    unmatched = surface.brokenBondsWithoutFacet;
+                }
+            }
+            snapshotTimes.push_back(snap.time);
+            last = std::move(snap);
         }
         gsph::post::writePvd(out / "run.pvd", series);
-        std::printf("gsph-post: %zu snapshots -> %s (open run.pvd in ParaView)\n", snapshots.size(),
-                    (out / "run.pvd").c_str());
+        std::printf("gsph-post: %zu snapshots of %d particles -> %s (open run.pvd in ParaView)\n",
+                    snapshots.size(), static_cast<int>(last.size()), (out / "run.pvd").c_str());
+        if (cracksPossible) {
+            gsph::post::writePvd(out / "cracks.pvd", crackSeries);
+            std::printf(
+                "gsph-post: crack surfaces -> %s: last snapshot %zu facets, reference area "
+                "%.6g m² (%zu broken bonds are no Delaunay edge)",
+                (out / "cracks.pvd").c_str(), crackPolygons, crackArea, unmatched);
+            if (cracks)
+                std::printf("; Delaunay of %zu particles + %zu ghosts in %.2f s",
+                            static_cast<std::size_t>(last.size()), cracks->ghosts(), crackSetup);
+            std::printf("\n");
+        }
+        std::printf("gsph-post: ParaView files in %.2f s\n", seconds(start));
         if (!noPictures) {
-            const fs::path picture = out / ("final_" + field + ".png");
-            gsph::post::renderSnapshot(last, field, picture);
-            std::printf("gsph-post: picture %s\n", picture.c_str());
-            const fs::path history = fs::path(runDir) / "history.csv";
-            if (fs::exists(history)) {
-                gsph::post::plotHistory(history, out / "history.png");
+            if (times.empty()) {
+                const fs::path picture = out / ("final_" + field + ".png");
+                gsph::post::renderSnapshot(last, field, picture);
+                std::printf("gsph-post: picture %s\n", picture.c_str());
+            } else {
+                for (std::size_t k : nearestSnapshots(snapshotTimes, times)) {
+                    const gsph::Snapshot snap =
+                        k + 1 == snapshots.size() ? last : gsph::readSnapshot(snapshots[k]);
+                    const std::string stem = snapshots[k].stem().string();
+                    const fs::path picture =
+                        out / (field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
+                    gsph::post::renderSnapshot(snap, field, picture);
+                    std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
+                }
+            }
+            const fs::path historyCsv = fs::path(runDir) / "history.csv";
+            if (fs::exists(historyCsv)) {
+                const gsph::post::HistoryTable history = gsph::post::readHistory(historyCsv);
+                const std::vector<std::string> energies = {
+                    "kinetic_energy", "internal_energy", "plastic_work",  "damage_dissipation",
+                    "hourglass_work", "viscous_work",    "external_work", "total_energy"};
+                if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png"))
+                    throw gsph::InputError(historyCsv.string() +
+                                           ": not a gsph history (no time and energy columns)");
                 std::printf("gsph-post: plot %s\n", (out / "history.png").c_str());
+                if (gsph::post::plotHistory(history, {"momentum_x", "momentum_y", "momentum_z"},
+                                            "momentum [kg m/s]", out / "momentum.png"))
+                    std::printf("gsph-post: plot %s\n", (out / "momentum.png").c_str());
             }
         }
     } catch (const gsph::Error& e) {

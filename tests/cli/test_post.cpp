@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // gsph-post on a real run: the arrays read back from the .vtu with VTK's reader equal the
 // snapshot's, the .pvd lists every snapshot, and the pictures are real (expected size, not
-// blank). Bad input gets a one-line error.
+// blank), also at chosen times and for the momentum. Bad input gets a one-line error.
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -38,12 +38,16 @@ class PostRun : public ::testing::Test {
         ASSERT_EQ(r.status, 0) << r.err;
         r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string());
         ASSERT_EQ(r.status, 0) << r.err;
+        r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string() + " -o " +
+                       (*dir_ / "pictures").string() + " --field displacement --times 1e-5,1");
+        ASSERT_EQ(r.status, 0) << r.err;
     }
     static void TearDownTestSuite() { delete dir_; }
     static TempDir* dir_;
 };
 TempDir* PostRun::dir_ = nullptr;
 
+// Every field of the snapshot, read back with VTK's reader: float64 arrays round-trip exactly.
 TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
     const Snapshot snap = readSnapshot(*dir_ / "run/snapshot_000007.h5");
     vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -51,23 +55,43 @@ TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
     reader->Update();
     vtkUnstructuredGrid* grid = reader->GetOutput();
     ASSERT_EQ(grid->GetNumberOfPoints(), snap.size());
+    ASSERT_EQ(grid->GetNumberOfCells(), snap.size());
     vtkPointData* pd = grid->GetPointData();
-    for (const char* name :
-         {"displacement", "velocity", "stress", "von_mises", "pressure", "J", "body", "space"})
+    const std::vector<std::pair<const char*, int>> arrays = {
+        {"displacement", 3},     {"velocity", 3}, {"stress", 9},
+        {"von_mises", 1},        {"pressure", 1}, {"plastic_strain", 1},
+        {"temperature", 1},      {"damage", 1},   {"J", 1},
+        {"reference_volume", 1}, {"body", 1},     {"space", 1},
+        {"transient", 1}};
+    for (const auto& [name, components] : arrays) {
         ASSERT_NE(pd->GetArray(name), nullptr) << name;
+        EXPECT_EQ(pd->GetArray(name)->GetNumberOfComponents(), components) << name;
+    }
+    auto scalar = [&](const char* name, vtkIdType a) { return pd->GetArray(name)->GetTuple1(a); };
     double worst = 0.0;
     for (vtkIdType a = 0; a < snap.size(); ++a) {
         const auto i = static_cast<std::size_t>(a);
+        EXPECT_EQ(grid->GetCellType(a), VTK_VERTEX);
         double p[3];
         grid->GetPoint(a, p);
         worst = std::max(worst, (Vec3(p[0], p[1], p[2]) - snap.x[i]).norm());
+        const double* u = pd->GetArray("displacement")->GetTuple3(a);
+        worst = std::max(worst, (Vec3(u[0], u[1], u[2]) - (snap.x[i] - snap.X[i])).norm());
         const double* v = pd->GetArray("velocity")->GetTuple3(a);
         worst = std::max(worst, (Vec3(v[0], v[1], v[2]) - snap.v[i]).norm());
         const double* s = pd->GetArray("stress")->GetTuple9(a);
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) EXPECT_EQ(s[3 * r + c], snap.stress[i](r, c));
-        EXPECT_EQ(pd->GetArray("von_mises")->GetTuple1(a), post::vonMises(snap.stress[i]));
-        EXPECT_EQ(pd->GetArray("J")->GetTuple1(a), snap.F[i].determinant());
+        EXPECT_EQ(scalar("von_mises", a), post::vonMises(snap.stress[i]));
+        EXPECT_EQ(scalar("pressure", a), -snap.stress[i].trace() / 3.0);
+        EXPECT_EQ(scalar("plastic_strain", a), snap.plasticStrain[i]);
+        EXPECT_EQ(scalar("temperature", a), snap.temperature[i]);
+        EXPECT_EQ(scalar("damage", a), snap.damage[i]);
+        EXPECT_EQ(scalar("J", a), snap.F[i].determinant());
+        EXPECT_EQ(scalar("reference_volume", a), snap.volume[i]);
+        EXPECT_EQ(scalar("body", a), snap.body[i]);
+        EXPECT_EQ(scalar("space", a), snap.space[i]);
+        EXPECT_EQ(scalar("transient", a), snap.transient[i]);
     }
     EXPECT_EQ(worst, 0.0);  // written as float64: exact round trip
 }
@@ -113,6 +137,27 @@ void expectRealPicture(const fs::path& png, int width, int height) {
 TEST_F(PostRun, PicturesAreReal) {
     expectRealPicture(*dir_ / "run/post/final_von_mises.png", 1200, 800);
     expectRealPicture(*dir_ / "run/post/history.png", 1000, 600);
+    expectRealPicture(*dir_ / "run/post/momentum.png", 1000, 600);
+}
+
+// --field displacement --times 1e-5,1: the snapshots nearest to each time, by their /time.
+TEST_F(PostRun, PicturesAtChosenTimes) {
+    std::vector<std::pair<double, std::string>> snapshots;
+    for (int k = 0; k <= 10; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "%06d", k);
+        snapshots.emplace_back(
+            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(name) + ".h5")).time, name);
+    }
+    for (double t : {1e-5, 1.0}) {
+        const auto nearest =
+            std::min_element(snapshots.begin(), snapshots.end(), [t](const auto& p, const auto& q) {
+                return std::abs(p.first - t) < std::abs(q.first - t);
+            });
+        expectRealPicture(*dir_ / "pictures" / ("displacement_" + nearest->second + ".png"), 1200,
+                          800);
+    }
+    EXPECT_TRUE(fs::exists(*dir_ / "pictures/displacement_000010.png"));  // t = 1 s: the last
 }
 
 TEST(PostCli, MissingRunFolderIsAClearError) {
