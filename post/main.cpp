@@ -14,6 +14,7 @@
 //   history.png, momentum.png        energies and momentum of history.csv.
 // Pictures need an X server: without DISPLAY gsph-post re-runs itself under `xvfb-run -a`
 // (package xvfb). Errors: one line naming the file, exit code 1.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
@@ -24,6 +25,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
@@ -37,18 +39,45 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Re-executes this command under xvfb-run when pictures need an X server and none is set.
-void ensureDisplay(int argc, char** argv) {
+bool haveDisplay() {
     const char* display = std::getenv("DISPLAY");
-    if ((display && *display) || std::getenv("GSPH_POST_UNDER_XVFB")) return;
-    setenv("GSPH_POST_UNDER_XVFB", "1", 1);
-    std::vector<char*> args = {const_cast<char*>("xvfb-run"), const_cast<char*>("-a")};
-    for (int i = 0; i < argc; ++i) args.push_back(argv[i]);
-    args.push_back(nullptr);
-    execvp("xvfb-run", args.data());
-    throw gsph::Error(
-        "no X display for the pictures and xvfb-run is not installed (apt-get install xvfb), or "
-        "use --no-pictures");
+    return display && *display;
+}
+
+// Runs the pictures in a child `gsph-post --pictures-of …` under xvfb-run. Debian's VTK is an
+// X11 build; the X connection of a fresh Xvfb sometimes fails on a loaded machine (VTK then
+// aborts: measured 1 in 4 with four runs at once), so a child that dies that way is retried.
+void picturesUnderXvfb(const char* self, const std::vector<std::string>& childArgs) {
+    constexpr int kAttempts = 3;
+    for (int attempt = 1; attempt <= kAttempts; ++attempt) {
+        // xvfb-run -a starts its search for a free display at 99: concurrent runs race for the
+        // same number. Start at a number of our own (-n before -a: -a searches from it).
+        std::string first = std::to_string(100 + (getpid() * 7 + attempt) % 30000);
+        std::vector<std::string> words = {"xvfb-run", "-n", first, "-a", self};
+        words.insert(words.end(), childArgs.begin(), childArgs.end());
+        std::vector<char*> args;
+        for (std::string& w : words) args.push_back(w.data());
+        args.push_back(nullptr);
+        std::fflush(stdout);
+        const pid_t child = fork();
+        if (child < 0) throw gsph::Error("cannot start xvfb-run for the pictures (fork failed)");
+        if (child == 0) {
+            execvp("xvfb-run", args.data());
+            std::fprintf(stderr,
+                         "gsph-post: error: no X display for the pictures and xvfb-run is not "
+                         "installed (apt-get install xvfb), or use --no-pictures\n");
+            _exit(1);
+        }
+        int status = 0;
+        if (waitpid(child, &status, 0) < 0) throw gsph::Error("lost the pictures' xvfb-run");
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 1)  // the child said why
+            throw gsph::Error("the pictures failed (see above)");
+        std::fprintf(stderr, "gsph-post: the X server of the pictures failed (status %d)%s\n",
+                     WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status),
+                     attempt < kAttempts ? ", trying again" : "");
+    }
+    throw gsph::Error("no picture: the X server failed " + std::to_string(kAttempts) + " times");
 }
 
 std::vector<fs::path> snapshotFiles(const std::string& runDir) {
@@ -89,6 +118,34 @@ std::vector<std::size_t> nearestSnapshots(const std::vector<double>& times,
     return out;
 }
 
+// The pictures (needs an X server): each snapshot of `pictured` coloured by `field`, named
+// final_FIELD.png if `final`, else FIELD_NNNNNN.png; then the plots of history.csv.
+void renderPictures(const std::vector<std::string>& pictured, bool final, const std::string& field,
+                    const fs::path& runDir, const fs::path& out) {
+    for (const std::string& file : pictured) {
+        const gsph::Snapshot snap = gsph::readSnapshot(file);
+        const std::string stem = fs::path(file).stem().string();
+        const fs::path picture =
+            out / (final ? "final_" + field + ".png"
+                         : field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
+        gsph::post::renderSnapshot(snap, field, picture);
+        std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
+    }
+    const fs::path historyCsv = runDir / "history.csv";
+    if (!fs::exists(historyCsv)) return;
+    const gsph::post::HistoryTable history = gsph::post::readHistory(historyCsv);
+    const std::vector<std::string> energies = {
+        "kinetic_energy", "internal_energy", "plastic_work",  "damage_dissipation",
+        "hourglass_work", "viscous_work",    "external_work", "total_energy"};
+    if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png"))
+        throw gsph::InputError(historyCsv.string() +
+                               ": not a gsph history (no time and energy columns)");
+    std::printf("gsph-post: plot %s\n", (out / "history.png").c_str());
+    if (gsph::post::plotHistory(history, {"momentum_x", "momentum_y", "momentum_z"},
+                                "momentum [kg m/s]", out / "momentum.png"))
+        std::printf("gsph-post: plot %s\n", (out / "momentum.png").c_str());
+}
+
 double seconds(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
@@ -111,11 +168,19 @@ int main(int argc, char** argv) {
         ->delimiter(',');
     app.add_flag("--no-pictures", noPictures, "write only the ParaView files");
     app.add_flag("--no-cracks", noCracks, "write no crack surfaces");
+    // Internal: the pictures' child process under xvfb-run (picturesUnderXvfb).
+    std::vector<std::string> picturesOf;
+    bool finalPicture = false;
+    app.add_option("--pictures-of", picturesOf)->group("");
+    app.add_flag("--final-picture", finalPicture)->group("");
     CLI11_PARSE(app, argc, argv);
     try {
-        const std::vector<fs::path> snapshots = snapshotFiles(runDir);
-        if (!noPictures) ensureDisplay(argc, argv);
         const fs::path out = outDir.empty() ? fs::path(runDir) / "post" : fs::path(outDir);
+        if (!picturesOf.empty()) {
+            renderPictures(picturesOf, finalPicture, field, runDir, out);
+            return 0;
+        }
+        const std::vector<fs::path> snapshots = snapshotFiles(runDir);
         fs::create_directories(out);
         const auto start = std::chrono::steady_clock::now();
 
@@ -181,34 +246,20 @@ int main(int argc, char** argv) {
         }
         std::printf("gsph-post: ParaView files in %.2f s\n", seconds(start));
         if (!noPictures) {
-            if (times.empty()) {
-                const fs::path picture = out / ("final_" + field + ".png");
-                gsph::post::renderSnapshot(last, field, picture);
-                std::printf("gsph-post: picture %s\n", picture.c_str());
+            std::vector<std::string> pictured;
+            if (times.empty()) pictured.push_back(snapshots.back().string());
+            for (std::size_t k : nearestSnapshots(snapshotTimes, times))
+                pictured.push_back(snapshots[k].string());
+            if (haveDisplay()) {
+                renderPictures(pictured, times.empty(), field, runDir, out);
             } else {
-                for (std::size_t k : nearestSnapshots(snapshotTimes, times)) {
-                    const gsph::Snapshot snap =
-                        k + 1 == snapshots.size() ? last : gsph::readSnapshot(snapshots[k]);
-                    const std::string stem = snapshots[k].stem().string();
-                    const fs::path picture =
-                        out / (field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
-                    gsph::post::renderSnapshot(snap, field, picture);
-                    std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
+                std::vector<std::string> child = {runDir, "-o", out.string(), "--field", field};
+                if (times.empty()) child.push_back("--final-picture");
+                for (const std::string& p : pictured) {
+                    child.push_back("--pictures-of");
+                    child.push_back(p);
                 }
-            }
-            const fs::path historyCsv = fs::path(runDir) / "history.csv";
-            if (fs::exists(historyCsv)) {
-                const gsph::post::HistoryTable history = gsph::post::readHistory(historyCsv);
-                const std::vector<std::string> energies = {
-                    "kinetic_energy", "internal_energy", "plastic_work",  "damage_dissipation",
-                    "hourglass_work", "viscous_work",    "external_work", "total_energy"};
-                if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png"))
-                    throw gsph::InputError(historyCsv.string() +
-                                           ": not a gsph history (no time and energy columns)");
-                std::printf("gsph-post: plot %s\n", (out / "history.png").c_str());
-                if (gsph::post::plotHistory(history, {"momentum_x", "momentum_y", "momentum_z"},
-                                            "momentum [kg m/s]", out / "momentum.png"))
-                    std::printf("gsph-post: plot %s\n", (out / "momentum.png").c_str());
+                picturesUnderXvfb(fs::read_symlink("/proc/self/exe").c_str(), child);
             }
         }
     } catch (const gsph::Error& e) {

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "pictures.hpp"
 
+#include <X11/Xlib.h>
 #include <vtkActor.h>
 #include <vtkAxis.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
+#include <vtkContextActor.h>
 #include <vtkContextScene.h>
-#include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
@@ -31,10 +32,12 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -43,7 +46,27 @@
 namespace gsph::post {
 namespace {
 
+// One X connection for every window of the process, opened here with retries: a fresh Xvfb on a
+// loaded machine sometimes refuses a connection (measured: 1 run in 4 with four at once), and
+// VTK's own XOpenDisplay aborts the process on the first refusal.
+void* sharedDisplay() {
+    static Display* display = [] {
+        constexpr int kAttempts = 40;
+        for (int attempt = 0; attempt < kAttempts; ++attempt) {
+            if (Display* d = XOpenDisplay(nullptr)) return d;
+            std::this_thread::sleep_for(std::chrono::milliseconds(250));
+        }
+        return static_cast<Display*>(nullptr);
+    }();
+    if (display == nullptr)
+        throw IoError(std::string("cannot connect to the X server ") +
+                      (std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "(DISPLAY unset)") +
+                      " for the pictures");
+    return display;
+}
+
 void savePng(vtkRenderWindow* window, const std::filesystem::path& png) {
+    window->SetDisplayId(sharedDisplay());
     window->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
@@ -215,12 +238,21 @@ bool plotHistory(const HistoryTable& history, const std::vector<std::string>& wa
             table->SetValue(static_cast<vtkIdType>(r), static_cast<vtkIdType>(p + 1),
                             (*plotted[p].second)[r]);
     }
-    vtkNew<vtkContextView> view;
-    view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
-    view->GetRenderWindow()->SetOffScreenRendering(1);
-    view->GetRenderWindow()->SetSize(width, height);
+    // A chart in a plain offscreen window: vtkContextView would add an X interactor, which
+    // crashes (XSync) when several gsph-post run at once under xvfb-run.
     vtkNew<vtkChartXY> chart;
-    view->GetScene()->AddItem(chart);
+    vtkNew<vtkContextScene> scene;
+    scene->AddItem(chart);
+    vtkNew<vtkContextActor> actor;
+    actor->SetScene(scene);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(1.0, 1.0, 1.0);
+    renderer->AddActor(actor);
+    scene->SetRenderer(renderer);
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(width, height);
+    window->AddRenderer(renderer);
     chart->SetShowLegend(true);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("time [s]");
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
@@ -233,7 +265,7 @@ bool plotHistory(const HistoryTable& history, const std::vector<std::string>& wa
         line->SetColor(palette[p % 8][0], palette[p % 8][1], palette[p % 8][2], 255);
         line->SetWidth(2.0);
     }
-    savePng(view->GetRenderWindow(), png);
+    savePng(window, png);
     return true;
 }
 
