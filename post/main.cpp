@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // gsph-post: turns a run folder into ParaView files and pictures.
 //
-// Usage:   gsph-post RUNDIR [-o OUTDIR] [--field NAME] [--times T1,T2,...] [--no-pictures]
-//                    [--no-cracks]
+// Usage:   gsph-post RUNDIR [-o OUTDIR] [--field NAME] [--times T1,T2,...] [--size W,H]
+//                    [--no-pictures] [--no-cracks]
 // Sample:  gsph-post run/graded_bar
 //          gsph-post run/graded_bar --field plastic_strain --times 1e-5,3e-5
 // Description: writes OUTDIR (default RUNDIR/post) with
@@ -23,6 +23,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -121,14 +122,14 @@ std::vector<std::size_t> nearestSnapshots(const std::vector<double>& times,
 // The pictures (needs an X server): each snapshot of `pictured` coloured by `field`, named
 // final_FIELD.png if `final`, else FIELD_NNNNNN.png; then the plots of history.csv.
 void renderPictures(const std::vector<std::string>& pictured, bool final, const std::string& field,
-                    const fs::path& runDir, const fs::path& out) {
+                    const fs::path& runDir, const fs::path& out, const std::vector<int>& size) {
     for (const std::string& file : pictured) {
         const gsph::Snapshot snap = gsph::readSnapshot(file);
         const std::string stem = fs::path(file).stem().string();
         const fs::path picture =
             out / (final ? "final_" + field + ".png"
                          : field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
-        gsph::post::renderSnapshot(snap, field, picture);
+        gsph::post::renderSnapshot(snap, field, picture, size[0], size[1]);
         std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
     }
     const fs::path historyCsv = runDir / "history.csv";
@@ -137,17 +138,24 @@ void renderPictures(const std::vector<std::string>& pictured, bool final, const 
     const std::vector<std::string> energies = {
         "kinetic_energy", "internal_energy", "plastic_work",  "damage_dissipation",
         "hourglass_work", "viscous_work",    "external_work", "total_energy"};
-    if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png"))
+    const int plotWidth = size[0] * 5 / 6, plotHeight = size[1] * 3 / 4;
+    if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png", plotWidth,
+                                 plotHeight))
         throw gsph::InputError(historyCsv.string() +
                                ": not a gsph history (no time and energy columns)");
     std::printf("gsph-post: plot %s\n", (out / "history.png").c_str());
     if (gsph::post::plotHistory(history, {"momentum_x", "momentum_y", "momentum_z"},
-                                "momentum [kg m/s]", out / "momentum.png"))
+                                "momentum [kg m/s]", out / "momentum.png", plotWidth, plotHeight))
         std::printf("gsph-post: plot %s\n", (out / "momentum.png").c_str());
 }
 
 double seconds(std::chrono::steady_clock::time_point since) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+// CPU time of the process (all threads) [s]: the figure that a shared machine does not disturb.
+double cpuSeconds() {
+    return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
 }  // namespace
@@ -166,6 +174,12 @@ int main(int argc, char** argv) {
                    "times [s] of the pictures, comma-separated (the nearest snapshots; default: "
                    "the last)")
         ->delimiter(',');
+    std::vector<int> size = {1200, 800};
+    app.add_option("--size", size,
+                   "width,height of the body's pictures in pixels (plots: 5/6 and 3/4 of it)")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(64, 8192));
     app.add_flag("--no-pictures", noPictures, "write only the ParaView files");
     app.add_flag("--no-cracks", noCracks, "write no crack surfaces");
     // Internal: the pictures' child process under xvfb-run (picturesUnderXvfb).
@@ -177,12 +191,13 @@ int main(int argc, char** argv) {
     try {
         const fs::path out = outDir.empty() ? fs::path(runDir) / "post" : fs::path(outDir);
         if (!picturesOf.empty()) {
-            renderPictures(picturesOf, finalPicture, field, runDir, out);
+            renderPictures(picturesOf, finalPicture, field, runDir, out, size);
             return 0;
         }
         const std::vector<fs::path> snapshots = snapshotFiles(runDir);
         fs::create_directories(out);
         const auto start = std::chrono::steady_clock::now();
+        const double cpuStart = cpuSeconds();
 
         std::vector<std::pair<double, std::string>> series, crackSeries;
         std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
@@ -210,9 +225,9 @@ int main(int argc, char** argv) {
                             std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
                             cracksPossible = false;
                         } else {
-                            const auto t0 = std::chrono::steady_clock::now();
+                            const double t0 = cpuSeconds();
                             cracks = std::make_unique<gsph::post::CrackSurfaces>(snap.X);
-                            crackSetup = seconds(t0);
+                            crackSetup = cpuSeconds() - t0;
                         }
                     }
                     if (cracks) surface = cracks->surface(snap);
@@ -240,20 +255,28 @@ int main(int argc, char** argv) {
                 "%.6g m² (%zu broken bonds are no Delaunay edge)",
                 (out / "cracks.pvd").c_str(), crackPolygons, crackArea, unmatched);
             if (cracks)
-                std::printf("; Delaunay of %zu particles + %zu ghosts in %.2f s",
+                std::printf("; Delaunay of %zu particles + %zu ghosts in %.2f s CPU",
                             static_cast<std::size_t>(last.size()), cracks->ghosts(), crackSetup);
             std::printf("\n");
         }
-        std::printf("gsph-post: ParaView files in %.2f s\n", seconds(start));
+        std::printf("gsph-post: ParaView files in %.2f s (%.2f s CPU)\n", seconds(start),
+                    cpuSeconds() - cpuStart);
         if (!noPictures) {
             std::vector<std::string> pictured;
             if (times.empty()) pictured.push_back(snapshots.back().string());
             for (std::size_t k : nearestSnapshots(snapshotTimes, times))
                 pictured.push_back(snapshots[k].string());
             if (haveDisplay()) {
-                renderPictures(pictured, times.empty(), field, runDir, out);
+                renderPictures(pictured, times.empty(), field, runDir, out, size);
             } else {
-                std::vector<std::string> child = {runDir, "-o", out.string(), "--field", field};
+                std::vector<std::string> child = {
+                    runDir,
+                    "-o",
+                    out.string(),
+                    "--field",
+                    field,
+                    "--size",
+                    std::to_string(size[0]) + "," + std::to_string(size[1])};
                 if (times.empty()) child.push_back("--final-picture");
                 for (const std::string& p : pictured) {
                     child.push_back("--pictures-of");

@@ -112,7 +112,14 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
 
     double range[2];
     values->GetRange(range);
-    if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+    // A field constant to round-off (a uniform stress) gets a range around its value, so the
+    // colour bar does not label one value five times.
+    const double scale = std::max(std::abs(range[0]), std::abs(range[1]));
+    if (range[1] - range[0] <= 1e-9 * scale || range[1] <= range[0]) {
+        const double half = scale > 0.0 ? 0.01 * scale : 0.5;
+        range[0] -= half;
+        range[1] += half;
+    }
     vtkNew<vtkLookupTable> colours;
     colours->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
     colours->SetTableRange(range);

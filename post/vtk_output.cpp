@@ -45,6 +45,8 @@ void writeXml(const std::filesystem::path& path, Data* data) {
         writer->SetInputData(data);
         writer->SetDataModeToAppended();
         writer->EncodeAppendedDataOff();
+        // LZ4: VTK's default zlib made writing 5× slower (measured at 1e5 particles).
+        writer->SetCompressorTypeToLZ4();
         if (writer->Write() != 1) throw IoError(path.string() + ": VTK could not write the file");
     });
 }

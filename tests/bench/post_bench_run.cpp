@@ -7,7 +7,9 @@
 // K snapshots of a shear that grows with time, with the bonds crossing a plane that sweeps
 // from z = 0.2 to z = 0.8 broken (so every snapshot has a crack surface to build).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 
@@ -43,6 +45,7 @@ int main(int argc, char** argv) {
             s.cauchy[a] = 1e8 * phase * (Mat3() << 0, 0, 1, 0, 0, 0, 1, 0, 0).finished();
             s.plasticStrain[a] = 0.01 * phase * ref.X[a][0];
         }
+        std::fill(s.bondIntact.begin(), s.bondIntact.end(), std::uint8_t{1});
         for (Index a = 0; a < ref.size(); ++a)
             for (Index p = ref.pairs.begin(a); p < ref.pairs.end(a); ++p) {
                 const Index b = ref.pairs.neighbor[static_cast<std::size_t>(p)];

@@ -16,7 +16,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "io/snapshot.hpp"
+#include "pictures.hpp"
 #include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 #include "vtk_output.hpp"
@@ -158,6 +160,32 @@ TEST_F(PostRun, PicturesAtChosenTimes) {
                           800);
     }
     EXPECT_TRUE(fs::exists(*dir_ / "pictures/displacement_000010.png"));  // t = 1 s: the last
+}
+
+// history.csv columns are found by name: other helpers add and reorder columns.
+TEST(PostHistory, ColumnsAreReadByName) {
+    TempDir dir;
+    {
+        std::ofstream csv(dir / "history.csv");
+        csv << "time,new_column,momentum_x,kinetic_energy\n0,7,1.5,2\n1e-6,8,2.5,3\n";
+    }
+    const post::HistoryTable h = post::readHistory(dir / "history.csv");
+    ASSERT_NE(h.column("kinetic_energy"), nullptr);
+    EXPECT_EQ(*h.column("kinetic_energy"), (std::vector<double>{2.0, 3.0}));
+    EXPECT_EQ(*h.column("momentum_x"), (std::vector<double>{1.5, 2.5}));
+    EXPECT_EQ(h.column("total_energy"), nullptr);
+    {
+        std::ofstream csv(dir / "bad.csv");
+        csv << "time,kinetic_energy\n0,1\n1e-6,oops\n";
+    }
+    try {
+        post::readHistory(dir / "bad.csv");
+        FAIL() << "a malformed row must be an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.csv:3: 'oops' is not a number"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(PostCli, MissingRunFolderIsAClearError) {
