@@ -7,9 +7,11 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -89,7 +91,77 @@ void ghostPoints(const Delaunay& dt, const std::vector<Delaunay::Vertex_handle>&
     }
 }
 
+// Facets within this multiple of the largest facet size (√area) form the patch whose centroids
+// give the local crack plane.
+constexpr double kPatchRadius = 3.0;
+
+// Per polygon, its reference area projected on the local crack plane (header comment).
+std::vector<double> projectedAreas(const std::vector<Vec3>& ref, const CrackSurface& c) {
+    const std::size_t m = c.polygons();
+    std::vector<Vec3> centroid(m), normal(m);
+    double size = 0.0;
+    for (std::size_t p = 0; p < m; ++p) {
+        std::vector<Vec3> corners;
+        for (Index k = c.offsets[p]; k < c.offsets[p + 1]; ++k)
+            corners.push_back(
+                ref[static_cast<std::size_t>(c.connectivity[static_cast<std::size_t>(k)])]);
+        Vec3 sum = Vec3::Zero();
+        for (const Vec3& q : corners) sum += q;
+        centroid[p] = sum / static_cast<double>(corners.size());
+        normal[p] = vectorArea(corners).normalized();
+        size = std::max(size, std::sqrt(c.referenceArea[p]));
+    }
+    // Uniform grid of cell R over the centroids: the patch of p is in the 27 cells around it.
+    const double R = kPatchRadius * size;
+    using Key = std::array<std::int64_t, 3>;
+    auto keyOf = [&](const Vec3& x) {
+        return Key{static_cast<std::int64_t>(std::floor(x[0] / R)),
+                   static_cast<std::int64_t>(std::floor(x[1] / R)),
+                   static_cast<std::int64_t>(std::floor(x[2] / R))};
+    };
+    std::vector<std::pair<Key, std::size_t>> grid(m);
+    for (std::size_t p = 0; p < m; ++p) grid[p] = {keyOf(centroid[p]), p};
+    std::sort(grid.begin(), grid.end());
+    std::vector<double> out(m);
+    parallelFor(static_cast<std::ptrdiff_t>(m), [&](std::ptrdiff_t pi) {
+        const auto p = static_cast<std::size_t>(pi);
+        const Key home = keyOf(centroid[p]);
+        double weight = 0.0;
+        Vec3 first = Vec3::Zero();
+        Mat3 second = Mat3::Zero();
+        for (std::int64_t dx = -1; dx <= 1; ++dx)
+            for (std::int64_t dy = -1; dy <= 1; ++dy)
+                for (std::int64_t dz = -1; dz <= 1; ++dz) {
+                    const Key k = {home[0] + dx, home[1] + dy, home[2] + dz};
+                    auto it = std::lower_bound(grid.begin(), grid.end(),
+                                               std::make_pair(k, std::size_t{0}));
+                    for (; it != grid.end() && it->first == k; ++it) {
+                        const std::size_t q = it->second;
+                        const Vec3 d = centroid[q] - centroid[p];
+                        if (d.norm() > R) continue;
+                        const double A = c.referenceArea[q];
+                        weight += A;
+                        first += A * d;
+                        second += A * d * d.transpose();
+                    }
+                }
+        const Vec3 mean = first / weight;
+        const Mat3 covariance = second / weight - mean * mean.transpose();
+        const Eigen::SelfAdjointEigenSolver<Mat3> eigen(covariance);
+        const Vec3 lambda = eigen.eigenvalues();  // ascending
+        // A patch that does not span a plane (one facet, one row) keeps the facet's own area.
+        const bool planar = lambda[1] > 1e-6 * lambda[2] && lambda[2] > 0.0;
+        out[p] = planar ? c.referenceArea[p] * std::abs(normal[p].dot(eigen.eigenvectors().col(0)))
+                        : c.referenceArea[p];
+    });
+    return out;
+}
+
 }  // namespace
+
+double CrackSurface::totalProjectedArea() const {
+    return std::accumulate(projectedArea.begin(), projectedArea.end(), 0.0);
+}
 
 double CrackSurface::totalReferenceArea() const {
     return std::accumulate(referenceArea.begin(), referenceArea.end(), 0.0);
@@ -280,6 +352,10 @@ CrackSurface CrackSurfaces::surface(const Snapshot& s) const {
         out.points[static_cast<std::size_t>(i)] =
             0.25 * xMean + 0.25 * FMean * (voronoiPosition_[v] - 0.25 * pMean);
     });
+    std::vector<Vec3> reference(used.size());
+    for (std::size_t i = 0; i < used.size(); ++i)
+        reference[i] = voronoiPosition_[static_cast<std::size_t>(used[i])];
+    out.projectedArea = projectedAreas(reference, out);
     return out;
 }
 

@@ -35,11 +35,18 @@ struct CrackSurface {
     std::vector<Index> offsets = {0};   ///< polygon p is connectivity[offsets[p] … offsets[p+1])
     std::vector<Index> connectivity;    ///< indices into points
     std::vector<double> referenceArea;  ///< per polygon, in the reference configuration [m²]
+    /// Per polygon, referenceArea × |n_facet · n_crack|: n_crack the normal of the plane fitted
+    /// (area-weighted principal axes) to the centroids of the facets within 3 facet sizes. On a
+    /// lattice a tilted crack is a staircase of cell faces; this is its area on the crack's
+    /// own plane, the crack's area without the staircase (a patch that spans no plane keeps
+    /// the facet's area) [m²].
+    std::vector<double> projectedArea;
     std::vector<std::array<Index, 2>> bond;   ///< per polygon, the broken bond (a, b), a < b
     std::size_t brokenBondsWithoutFacet = 0;  ///< broken bonds that are no (kept) Delaunay edge
 
     std::size_t polygons() const { return referenceArea.size(); }
     double totalReferenceArea() const;
+    double totalProjectedArea() const;
 };
 
 class CrackSurfaces {

@@ -202,7 +202,7 @@ int main(int argc, char** argv) {
         std::vector<std::pair<double, std::string>> series, crackSeries;
         std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
         bool cracksPossible = !noCracks;
-        double crackSetup = 0.0, crackArea = 0.0;
+        double crackSetup = 0.0, crackArea = 0.0, crackProjected = 0.0;
         std::size_t crackPolygons = 0, unmatched = 0;
         std::vector<double> snapshotTimes;
         gsph::Snapshot last;
@@ -238,6 +238,7 @@ int main(int argc, char** argv) {
                     gsph::post::writeVtp(out / vtp, surface);
                     crackSeries.emplace_back(snap.time, vtp);
                     crackArea = surface.totalReferenceArea();
+                    crackProjected = surface.totalProjectedArea();
                     crackPolygons = surface.polygons();
                     unmatched = surface.brokenBondsWithoutFacet;
                 }
@@ -252,8 +253,8 @@ int main(int argc, char** argv) {
             gsph::post::writePvd(out / "cracks.pvd", crackSeries);
             std::printf(
                 "gsph-post: crack surfaces -> %s: last snapshot %zu facets, reference area "
-                "%.6g m² (%zu broken bonds are no Delaunay edge)",
-                (out / "cracks.pvd").c_str(), crackPolygons, crackArea, unmatched);
+                "%.6g m², projected %.6g m² (%zu broken bonds are no Delaunay edge)",
+                (out / "cracks.pvd").c_str(), crackPolygons, crackArea, crackProjected, unmatched);
             if (cracks)
                 std::printf("; Delaunay of %zu particles + %zu ghosts in %.2f s CPU",
                             static_cast<std::size_t>(last.size()), cracks->ghosts(), crackSetup);

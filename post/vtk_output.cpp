@@ -172,10 +172,12 @@ void writeVtp(const std::filesystem::path& path, const CrackSurface& surface) {
     vtkNew<vtkCellArray> polygons;
     polygons->SetData(offsets, connectivity);
     auto area = namedArray<vtkDoubleArray>("reference_area", 1, nc);
+    auto projected = namedArray<vtkDoubleArray>("projected_area", 1, nc);
     auto bond = namedArray<vtkIntArray>("bond", 2, nc);
     for (vtkIdType c = 0; c < nc; ++c) {
         const auto i = static_cast<std::size_t>(c);
         area->SetValue(c, surface.referenceArea[i]);
+        projected->SetValue(c, surface.projectedArea[i]);
         const int ab[2] = {surface.bond[i][0], surface.bond[i][1]};
         bond->SetTypedTuple(c, ab);
     }
@@ -183,6 +185,7 @@ void writeVtp(const std::filesystem::path& path, const CrackSurface& surface) {
     poly->SetPoints(points);
     poly->SetPolys(polygons);
     poly->GetCellData()->AddArray(area);
+    poly->GetCellData()->AddArray(projected);
     poly->GetCellData()->AddArray(bond);
     writeXml<vtkXMLPolyDataWriter>(path, poly.GetPointer());
 }
