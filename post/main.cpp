@@ -1,24 +1,37 @@
 // SPDX-License-Identifier: MIT
 // gsph-post: turns a run folder into ParaView files and pictures.
 //
-// Usage:   gsph-post RUNDIR [-o OUTDIR] [--field von_mises|pressure|displacement|velocity|J]
-//                    [--no-pictures]
+// Usage:   gsph-post RUNDIR [-o OUTDIR] [--field NAME] [--times T1,T2,...] [--size W,H]
+//                    [--no-pictures] [--no-cracks]
 // Sample:  gsph-post run/graded_bar
-// Description: writes OUTDIR (default RUNDIR/post) with run.pvd + snapshot_NNNNNN.vtu (open
-// run.pvd in ParaView), final_<field>.png (the last snapshot, deformed, coloured by the field)
-// and history.png (the energies of history.csv). Pictures need an X server: without DISPLAY
-// gsph-post re-runs itself under `xvfb-run -a` (package xvfb). Errors: one line, exit code 1.
+//          gsph-post run/graded_bar --field plastic_strain --times 1e-5,3e-5
+// Description: writes OUTDIR (default RUNDIR/post) with
+//   run.pvd + snapshot_NNNNNN.vtu    particles with every field (open run.pvd in ParaView),
+//   cracks.pvd + crack_NNNNNN.vtp    crack surfaces (Voronoi facets of the broken bonds),
+//   FIELD_NNNNNN.png                 the deformed body coloured by FIELD at each of --times
+//                                    (the snapshot nearest to each time), or final_FIELD.png
+//                                    (the last snapshot) without --times,
+//   history.png, momentum.png        energies and momentum of history.csv.
+// Pictures need an X server: without DISPLAY gsph-post re-runs itself under `xvfb-run -a`
+// (package xvfb). Errors: one line naming the file, exit code 1.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "core/error.hpp"
 #include "core/version.hpp"
+#include "crack_surface.hpp"
 #include "io/snapshot.hpp"
 #include "pictures.hpp"
 #include "vtk_output.hpp"
@@ -27,18 +40,122 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Re-executes this command under xvfb-run when pictures need an X server and none is set.
-void ensureDisplay(int argc, char** argv) {
+bool haveDisplay() {
     const char* display = std::getenv("DISPLAY");
-    if ((display && *display) || std::getenv("GSPH_POST_UNDER_XVFB")) return;
-    setenv("GSPH_POST_UNDER_XVFB", "1", 1);
-    std::vector<char*> args = {const_cast<char*>("xvfb-run"), const_cast<char*>("-a")};
-    for (int i = 0; i < argc; ++i) args.push_back(argv[i]);
-    args.push_back(nullptr);
-    execvp("xvfb-run", args.data());
-    throw gsph::Error(
-        "no X display for the pictures and xvfb-run is not installed (apt-get install xvfb), or "
-        "use --no-pictures");
+    return display && *display;
+}
+
+// Runs the pictures in a child `gsph-post --pictures-of …` under xvfb-run. Debian's VTK is an
+// X11 build; the X connection of a fresh Xvfb sometimes fails on a loaded machine (VTK then
+// aborts: measured 1 in 4 with four runs at once), so a child that dies that way is retried.
+void picturesUnderXvfb(const char* self, const std::vector<std::string>& childArgs) {
+    constexpr int kAttempts = 3;
+    for (int attempt = 1; attempt <= kAttempts; ++attempt) {
+        // xvfb-run -a starts its search for a free display at 99: concurrent runs race for the
+        // same number. Start at a number of our own (-n before -a: -a searches from it).
+        std::string first = std::to_string(100 + (getpid() * 7 + attempt) % 30000);
+        std::vector<std::string> words = {"xvfb-run", "-n", first, "-a", self};
+        words.insert(words.end(), childArgs.begin(), childArgs.end());
+        std::vector<char*> args;
+        for (std::string& w : words) args.push_back(w.data());
+        args.push_back(nullptr);
+        std::fflush(stdout);
+        const pid_t child = fork();
+        if (child < 0) throw gsph::Error("cannot start xvfb-run for the pictures (fork failed)");
+        if (child == 0) {
+            execvp("xvfb-run", args.data());
+            std::fprintf(stderr,
+                         "gsph-post: error: no X display for the pictures and xvfb-run is not "
+                         "installed (apt-get install xvfb), or use --no-pictures\n");
+            _exit(1);
+        }
+        int status = 0;
+        if (waitpid(child, &status, 0) < 0) throw gsph::Error("lost the pictures' xvfb-run");
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 1)  // the child said why
+            throw gsph::Error("the pictures failed (see above)");
+        std::fprintf(stderr, "gsph-post: the X server of the pictures failed (status %d)%s\n",
+                     WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status),
+                     attempt < kAttempts ? ", trying again" : "");
+    }
+    throw gsph::Error("no picture: the X server failed " + std::to_string(kAttempts) + " times");
+}
+
+std::vector<fs::path> snapshotFiles(const std::string& runDir) {
+    if (!fs::is_directory(runDir)) throw gsph::InputError(runDir + ": no such run folder");
+    std::vector<fs::path> snapshots;
+    for (const fs::directory_entry& e : fs::directory_iterator(runDir)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("snapshot_", 0) == 0 && e.path().extension() == ".h5")
+            snapshots.push_back(e.path());
+    }
+    std::sort(snapshots.begin(), snapshots.end());
+    if (snapshots.empty())
+        throw gsph::InputError(runDir + ": no snapshot_*.h5 files (did gsph-solve run?)");
+    return snapshots;
+}
+
+// True if the points span three dimensions (a 2-D run lies in one plane: no crack surfaces).
+bool spansThreeDimensions(const std::vector<gsph::Vec3>& X) {
+    gsph::Vec3 lo = gsph::Vec3::Constant(1e300), hi = gsph::Vec3::Constant(-1e300);
+    for (const gsph::Vec3& p : X) {
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const gsph::Vec3 extent = hi - lo;
+    return X.size() >= 4 && extent.minCoeff() > 1e-9 * extent.maxCoeff();
+}
+
+// Snapshot index nearest to each requested time (by the snapshots' own /time).
+std::vector<std::size_t> nearestSnapshots(const std::vector<double>& times,
+                                          const std::vector<double>& wanted) {
+    std::vector<std::size_t> out;
+    for (double t : wanted) {
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < times.size(); ++k)
+            if (std::abs(times[k] - t) < std::abs(times[best] - t)) best = k;
+        out.push_back(best);
+    }
+    return out;
+}
+
+// The pictures (needs an X server): each snapshot of `pictured` coloured by `field`, named
+// final_FIELD.png if `final`, else FIELD_NNNNNN.png; then the plots of history.csv.
+void renderPictures(const std::vector<std::string>& pictured, bool final, const std::string& field,
+                    const fs::path& runDir, const fs::path& out, const std::vector<int>& size) {
+    for (const std::string& file : pictured) {
+        const gsph::Snapshot snap = gsph::readSnapshot(file);
+        const std::string stem = fs::path(file).stem().string();
+        const fs::path picture =
+            out / (final ? "final_" + field + ".png"
+                         : field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
+        gsph::post::renderSnapshot(snap, field, picture, size[0], size[1]);
+        std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
+    }
+    const fs::path historyCsv = runDir / "history.csv";
+    if (!fs::exists(historyCsv)) return;
+    const gsph::post::HistoryTable history = gsph::post::readHistory(historyCsv);
+    const std::vector<std::string> energies = {
+        "kinetic_energy", "internal_energy", "plastic_work",  "damage_dissipation",
+        "hourglass_work", "viscous_work",    "external_work", "total_energy"};
+    const int plotWidth = size[0] * 5 / 6, plotHeight = size[1] * 3 / 4;
+    if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png", plotWidth,
+                                 plotHeight))
+        throw gsph::InputError(historyCsv.string() +
+                               ": not a gsph history (no time and energy columns)");
+    std::printf("gsph-post: plot %s\n", (out / "history.png").c_str());
+    if (gsph::post::plotHistory(history, {"momentum_x", "momentum_y", "momentum_z"},
+                                "momentum [kg m/s]", out / "momentum.png", plotWidth, plotHeight))
+        std::printf("gsph-post: plot %s\n", (out / "momentum.png").c_str());
+}
+
+double seconds(std::chrono::steady_clock::time_point since) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
+}
+
+// CPU time of the process (all threads) [s]: the figure that a shared machine does not disturb.
+double cpuSeconds() {
+    return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
 }
 
 }  // namespace
@@ -47,46 +164,126 @@ int main(int argc, char** argv) {
     CLI::App app{"gsph-post: ParaView files and pictures of a GSPH run"};
     app.set_version_flag("--version", gsph::kVersion);
     std::string runDir, outDir, field = "von_mises";
-    bool noPictures = false;
+    std::vector<double> times;
+    bool noPictures = false, noCracks = false;
     app.add_option("rundir", runDir, "run folder written by gsph-solve")->required();
     app.add_option("-o,--output", outDir, "output folder (default: RUNDIR/post)");
-    app.add_option("--field", field, "field of the picture")
-        ->check(CLI::IsMember({"von_mises", "pressure", "displacement", "velocity", "J"}));
+    app.add_option("--field", field, "field of the pictures")
+        ->check(CLI::IsMember(gsph::post::scalarFieldNames()));
+    app.add_option("--times", times,
+                   "times [s] of the pictures, comma-separated (the nearest snapshots; default: "
+                   "the last)")
+        ->delimiter(',');
+    std::vector<int> size = {1200, 800};
+    app.add_option("--size", size,
+                   "width,height of the body's pictures in pixels (plots: 5/6 and 3/4 of it)")
+        ->delimiter(',')
+        ->expected(2)
+        ->check(CLI::Range(64, 8192));
     app.add_flag("--no-pictures", noPictures, "write only the ParaView files");
+    app.add_flag("--no-cracks", noCracks, "write no crack surfaces");
+    // Internal: the pictures' child process under xvfb-run (picturesUnderXvfb).
+    std::vector<std::string> picturesOf;
+    bool finalPicture = false;
+    app.add_option("--pictures-of", picturesOf)->group("");
+    app.add_flag("--final-picture", finalPicture)->group("");
     CLI11_PARSE(app, argc, argv);
     try {
-        if (!fs::is_directory(runDir)) throw gsph::InputError(runDir + ": no such run folder");
-        std::vector<fs::path> snapshots;
-        for (const fs::directory_entry& e : fs::directory_iterator(runDir)) {
-            const std::string name = e.path().filename().string();
-            if (name.rfind("snapshot_", 0) == 0 && e.path().extension() == ".h5")
-                snapshots.push_back(e.path());
-        }
-        std::sort(snapshots.begin(), snapshots.end());
-        if (snapshots.empty())
-            throw gsph::InputError(runDir + ": no snapshot_*.h5 files (did gsph-solve run?)");
-        if (!noPictures) ensureDisplay(argc, argv);
         const fs::path out = outDir.empty() ? fs::path(runDir) / "post" : fs::path(outDir);
+        if (!picturesOf.empty()) {
+            renderPictures(picturesOf, finalPicture, field, runDir, out, size);
+            return 0;
+        }
+        const std::vector<fs::path> snapshots = snapshotFiles(runDir);
         fs::create_directories(out);
-        std::vector<std::pair<double, std::string>> series;
+        const auto start = std::chrono::steady_clock::now();
+        const double cpuStart = cpuSeconds();
+
+        std::vector<std::pair<double, std::string>> series, crackSeries;
+        std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
+        bool cracksPossible = !noCracks;
+        double crackSetup = 0.0, crackArea = 0.0, crackProjected = 0.0;
+        std::size_t crackPolygons = 0, unmatched = 0;
+        std::vector<double> snapshotTimes;
         gsph::Snapshot last;
-        for (const fs::path& p : snapshots) {
-            last = gsph::readSnapshot(p);
-            const std::string vtu = p.stem().string() + ".vtu";
-            gsph::post::writeVtu(out / vtu, last);
-            series.emplace_back(last.time, vtu);
+        for (std::size_t k = 0; k < snapshots.size(); ++k) {
+            const fs::path& p = snapshots[k];
+            gsph::Snapshot snap = gsph::readSnapshot(p);
+            if (k > 0 && snap.size() != last.size())
+                throw gsph::InputError(p.string() + ": " + std::to_string(snap.size()) +
+                                       " particles, the run's first snapshot has " +
+                                       std::to_string(last.size()));
+            const std::string stem = p.stem().string();
+            const std::string vtu = stem + ".vtu";
+            gsph::post::writeVtu(out / vtu, snap);
+            series.emplace_back(snap.time, vtu);
+            if (cracksPossible) {
+                gsph::post::CrackSurface surface;
+                if (!snap.brokenBonds.empty()) {
+                    if (!cracks) {
+                        if (!spansThreeDimensions(snap.X)) {
+                            std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
+                            cracksPossible = false;
+                        } else {
+                            const double t0 = cpuSeconds();
+                            cracks = std::make_unique<gsph::post::CrackSurfaces>(snap.X);
+                            crackSetup = cpuSeconds() - t0;
+                        }
+                    }
+                    if (cracks) surface = cracks->surface(snap);
+                }
+                if (cracksPossible) {
+                    const std::string vtp =
+                        "crack_" + stem.substr(std::string("snapshot_").size()) + ".vtp";
+                    gsph::post::writeVtp(out / vtp, surface);
+                    crackSeries.emplace_back(snap.time, vtp);
+                    crackArea = surface.totalReferenceArea();
+                    crackProjected = surface.totalProjectedArea();
+                    crackPolygons = surface.polygons();
+                    unmatched = surface.brokenBondsWithoutFacet;
+                }
+            }
+            snapshotTimes.push_back(snap.time);
+            last = std::move(snap);
         }
         gsph::post::writePvd(out / "run.pvd", series);
-        std::printf("gsph-post: %zu snapshots -> %s (open run.pvd in ParaView)\n", snapshots.size(),
-                    (out / "run.pvd").c_str());
+        std::printf("gsph-post: %zu snapshots of %d particles -> %s (open run.pvd in ParaView)\n",
+                    snapshots.size(), static_cast<int>(last.size()), (out / "run.pvd").c_str());
+        if (cracksPossible) {
+            gsph::post::writePvd(out / "cracks.pvd", crackSeries);
+            std::printf(
+                "gsph-post: crack surfaces -> %s: last snapshot %zu facets, reference area "
+                "%.6g m², projected %.6g m² (%zu broken bonds are no Delaunay edge)",
+                (out / "cracks.pvd").c_str(), crackPolygons, crackArea, crackProjected, unmatched);
+            if (cracks)
+                std::printf("; Delaunay of %zu particles + %zu ghosts in %.2f s CPU",
+                            static_cast<std::size_t>(last.size()), cracks->ghosts(), crackSetup);
+            std::printf("\n");
+        }
+        std::printf("gsph-post: ParaView files in %.2f s (%.2f s CPU)\n", seconds(start),
+                    cpuSeconds() - cpuStart);
         if (!noPictures) {
-            const fs::path picture = out / ("final_" + field + ".png");
-            gsph::post::renderSnapshot(last, field, picture);
-            std::printf("gsph-post: picture %s\n", picture.c_str());
-            const fs::path history = fs::path(runDir) / "history.csv";
-            if (fs::exists(history)) {
-                gsph::post::plotHistory(history, out / "history.png");
-                std::printf("gsph-post: plot %s\n", (out / "history.png").c_str());
+            std::vector<std::string> pictured;
+            if (times.empty()) pictured.push_back(snapshots.back().string());
+            for (std::size_t k : nearestSnapshots(snapshotTimes, times))
+                pictured.push_back(snapshots[k].string());
+            if (haveDisplay()) {
+                renderPictures(pictured, times.empty(), field, runDir, out, size);
+            } else {
+                std::vector<std::string> child = {
+                    runDir,
+                    "-o",
+                    out.string(),
+                    "--field",
+                    field,
+                    "--size",
+                    std::to_string(size[0]) + "," + std::to_string(size[1])};
+                if (times.empty()) child.push_back("--final-picture");
+                for (const std::string& p : pictured) {
+                    child.push_back("--pictures-of");
+                    child.push_back(p);
+                }
+                picturesUnderXvfb(fs::read_symlink("/proc/self/exe").c_str(), child);
             }
         }
     } catch (const gsph::Error& e) {

@@ -1,14 +1,15 @@
 // SPDX-License-Identifier: MIT
 #include "pictures.hpp"
 
+#include <X11/Xlib.h>
 #include <vtkActor.h>
 #include <vtkAxis.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
+#include <vtkContextActor.h>
 #include <vtkContextScene.h>
-#include <vtkContextView.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
@@ -31,9 +32,12 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -42,15 +46,27 @@
 namespace gsph::post {
 namespace {
 
-double fieldValue(const Snapshot& s, std::size_t a, const std::string& field) {
-    if (field == "von_mises") return vonMises(s.stress[a]);
-    if (field == "pressure") return -s.stress[a].trace() / 3.0;
-    if (field == "displacement") return (s.x[a] - s.X[a]).norm();
-    if (field == "velocity") return s.v[a].norm();
-    return s.F[a].determinant();  // "J"
+// One X connection for every window of the process, opened here with retries: a fresh Xvfb on a
+// loaded machine sometimes refuses a connection (measured: 1 run in 4 with four at once), and
+// VTK's own XOpenDisplay aborts the process on the first refusal.
+void* sharedDisplay() {
+    static Display* display = [] {
+        constexpr int kAttempts = 40;
+        for (int attempt = 0; attempt < kAttempts; ++attempt) {
+            if (Display* d = XOpenDisplay(nullptr)) return d;
+            std::this_thread::sleep_for(std::chrono::milliseconds(250));
+        }
+        return static_cast<Display*>(nullptr);
+    }();
+    if (display == nullptr)
+        throw IoError(std::string("cannot connect to the X server ") +
+                      (std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "(DISPLAY unset)") +
+                      " for the pictures");
+    return display;
 }
 
 void savePng(vtkRenderWindow* window, const std::filesystem::path& png) {
+    window->SetDisplayId(sharedDisplay());
     window->Render();
     vtkNew<vtkWindowToImageFilter> grab;
     grab->SetInput(window);
@@ -68,14 +84,9 @@ void savePng(vtkRenderWindow* window, const std::filesystem::path& png) {
 
 }  // namespace
 
-bool isPictureField(const std::string& f) {
-    return f == "von_mises" || f == "pressure" || f == "displacement" || f == "velocity" ||
-           f == "J";
-}
-
 void renderSnapshot(const Snapshot& s, const std::string& field, const std::filesystem::path& png,
                     int width, int height) {
-    if (!isPictureField(field)) throw InputError("unknown picture field '" + field + "'");
+    if (!isScalarField(field)) throw InputError("unknown picture field '" + field + "'");
     const vtkIdType n = s.size();
     vtkNew<vtkPoints> points;
     vtkNew<vtkCellArray> vertices;
@@ -88,7 +99,7 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
         const auto i = static_cast<std::size_t>(a);
         points->InsertNextPoint(s.x[i].data());
         vertices->InsertNextCell(1, &a);
-        values->InsertNextValue(fieldValue(s, i, field));
+        values->InsertNextValue(scalarField(s, i, field));
         radius->InsertNextValue(0.5 * std::cbrt(s.volume[i] * s.F[i].determinant()));
         lo = lo.cwiseMin(s.x[i]);
         hi = hi.cwiseMax(s.x[i]);
@@ -101,7 +112,14 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
 
     double range[2];
     values->GetRange(range);
-    if (range[1] <= range[0]) range[1] = range[0] + 1.0;
+    // A field constant to round-off (a uniform stress) gets a range around its value, so the
+    // colour bar does not label one value five times.
+    const double scale = std::max(std::abs(range[0]), std::abs(range[1]));
+    if (range[1] - range[0] <= 1e-9 * scale || range[1] <= range[0]) {
+        const double half = scale > 0.0 ? 0.01 * scale : 0.5;
+        range[0] -= half;
+        range[1] += half;
+    }
     vtkNew<vtkLookupTable> colours;
     colours->SetHueRange(0.667, 0.0);  // blue (low) to red (high)
     colours->SetTableRange(range);
@@ -166,65 +184,96 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     savePng(window, png);
 }
 
-void plotHistory(const std::filesystem::path& csv, const std::filesystem::path& png, int width,
-                 int height) {
+HistoryTable readHistory(const std::filesystem::path& csv) {
     std::ifstream in(csv);
     if (!in) throw InputError(csv.string() + ": cannot read");
+    HistoryTable t;
     std::string header;
     std::getline(in, header);
-    std::vector<std::string> names;
     std::stringstream hs(header);
-    for (std::string col; std::getline(hs, col, ',');) names.push_back(col);
-    std::vector<std::vector<double>> cols(names.size());
+    for (std::string col; std::getline(hs, col, ',');) t.names.push_back(col);
+    t.columns.resize(t.names.size());
+    long lineNo = 1;
     for (std::string line; std::getline(in, line);) {
+        ++lineNo;
+        if (line.empty()) continue;
         std::stringstream ls(line);
         std::size_t c = 0;
-        for (std::string cell; std::getline(ls, cell, ',') && c < cols.size(); ++c)
-            cols[c].push_back(std::stod(cell));
+        for (std::string cell; std::getline(ls, cell, ',') && c < t.columns.size(); ++c) {
+            char* end = nullptr;
+            const double value = std::strtod(cell.c_str(), &end);
+            if (end == cell.c_str())
+                throw InputError(csv.string() + ":" + std::to_string(lineNo) + ": '" + cell +
+                                 "' is not a number");
+            t.columns[c].push_back(value);
+        }
+        if (c != t.columns.size())
+            throw InputError(csv.string() + ":" + std::to_string(lineNo) + ": " +
+                             std::to_string(c) + " values for " + std::to_string(t.columns.size()) +
+                             " columns");
     }
-    const std::vector<std::string> energies = {"kinetic_energy", "internal_energy",
-                                               "hourglass_work", "viscous_work",
-                                               "external_work",  "total_energy"};
+    return t;
+}
+
+const std::vector<double>* HistoryTable::column(const std::string& name) const {
+    for (std::size_t c = 0; c < names.size(); ++c)
+        if (names[c] == name) return &columns[c];
+    return nullptr;
+}
+
+bool plotHistory(const HistoryTable& history, const std::vector<std::string>& wanted,
+                 const std::string& yTitle, const std::filesystem::path& png, int width,
+                 int height) {
+    const std::vector<double>* time = history.column("time");
+    std::vector<std::pair<std::string, const std::vector<double>*>> plotted;
+    for (const std::string& name : wanted)
+        if (const std::vector<double>* c = history.column(name)) plotted.emplace_back(name, c);
+    if (time == nullptr || plotted.empty() || time->empty()) return false;
     vtkNew<vtkTable> table;
-    vtkNew<vtkFloatArray> time;
-    time->SetName("time [s]");
-    table->AddColumn(time);
-    std::vector<std::size_t> plotted;
-    for (const std::string& e : energies)
-        for (std::size_t c = 0; c < names.size(); ++c)
-            if (names[c] == e) {
-                vtkNew<vtkFloatArray> column;
-                column->SetName(e.c_str());
-                table->AddColumn(column);
-                plotted.push_back(c);
-            }
-    if (names.empty() || names[0] != "time" || plotted.empty())
-        throw InputError(csv.string() + ": not a gsph history (no time and energy columns)");
-    table->SetNumberOfRows(static_cast<vtkIdType>(cols[0].size()));
-    for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r) {
-        table->SetValue(r, 0, cols[0][static_cast<std::size_t>(r)]);
-        for (std::size_t p = 0; p < plotted.size(); ++p)
-            table->SetValue(r, static_cast<vtkIdType>(p + 1),
-                            cols[plotted[p]][static_cast<std::size_t>(r)]);
+    vtkNew<vtkDoubleArray> t;
+    t->SetName("time [s]");
+    table->AddColumn(t);
+    for (const auto& [name, c] : plotted) {
+        vtkNew<vtkDoubleArray> column;
+        column->SetName(name.c_str());
+        table->AddColumn(column);
     }
-    vtkNew<vtkContextView> view;
-    view->GetRenderer()->SetBackground(1.0, 1.0, 1.0);
-    view->GetRenderWindow()->SetOffScreenRendering(1);
-    view->GetRenderWindow()->SetSize(width, height);
+    table->SetNumberOfRows(static_cast<vtkIdType>(time->size()));
+    for (std::size_t r = 0; r < time->size(); ++r) {
+        table->SetValue(static_cast<vtkIdType>(r), 0, (*time)[r]);
+        for (std::size_t p = 0; p < plotted.size(); ++p)
+            table->SetValue(static_cast<vtkIdType>(r), static_cast<vtkIdType>(p + 1),
+                            (*plotted[p].second)[r]);
+    }
+    // A chart in a plain offscreen window: vtkContextView would add an X interactor, which
+    // crashes (XSync) when several gsph-post run at once under xvfb-run.
     vtkNew<vtkChartXY> chart;
-    view->GetScene()->AddItem(chart);
+    vtkNew<vtkContextScene> scene;
+    scene->AddItem(chart);
+    vtkNew<vtkContextActor> actor;
+    actor->SetScene(scene);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetBackground(1.0, 1.0, 1.0);
+    renderer->AddActor(actor);
+    scene->SetRenderer(renderer);
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetSize(width, height);
+    window->AddRenderer(renderer);
     chart->SetShowLegend(true);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("time [s]");
-    chart->GetAxis(vtkAxis::LEFT)->SetTitle("energy [J]");
-    const unsigned char palette[6][3] = {{31, 119, 180}, {255, 127, 14},  {44, 160, 44},
-                                         {214, 39, 40},  {148, 103, 189}, {0, 0, 0}};
+    chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
+    const unsigned char palette[8][3] = {{31, 119, 180},  {255, 127, 14},  {44, 160, 44},
+                                         {214, 39, 40},   {148, 103, 189}, {140, 86, 75},
+                                         {227, 119, 194}, {0, 0, 0}};
     for (std::size_t p = 0; p < plotted.size(); ++p) {
         vtkPlot* line = chart->AddPlot(vtkChart::LINE);
         line->SetInputData(table, 0, static_cast<vtkIdType>(p + 1));
-        line->SetColor(palette[p % 6][0], palette[p % 6][1], palette[p % 6][2], 255);
+        line->SetColor(palette[p % 8][0], palette[p % 8][1], palette[p % 8][2], 255);
         line->SetWidth(2.0);
     }
-    savePng(view->GetRenderWindow(), png);
+    savePng(window, png);
+    return true;
 }
 
 }  // namespace gsph::post

@@ -2,26 +2,38 @@
 // Pictures without a display (VTK offscreen rendering; Debian's VTK needs an X server, which
 // gsph-post provides through xvfb-run when DISPLAY is unset):
 //   * the deformed particles of a snapshot coloured by a field, with a colour bar and the time;
-//   * a plot of history.csv: the energy channels against time.
+//   * plots of history.csv columns against time (energies, momentum), columns found by name.
 // PNGs are written under a temporary name and renamed.
 #pragma once
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "io/snapshot.hpp"
 
 namespace gsph::post {
 
-/// Fields a picture can show: von_mises, pressure, displacement, velocity (magnitudes), J.
-bool isPictureField(const std::string& field);
-
+/// The deformed particles of a snapshot coloured by a scalar field (vtk_output.hpp,
+/// scalarFieldNames()), with a colour bar and the time.
 void renderSnapshot(const Snapshot& snapshot, const std::string& field,
                     const std::filesystem::path& png, int width = 1200, int height = 800);
 
-/// Plots every energy column of a history.csv against time. Throws InputError naming the file
-/// if it has no such columns.
-void plotHistory(const std::filesystem::path& historyCsv, const std::filesystem::path& png,
-                 int width = 1000, int height = 600);
+/// history.csv as columns by name (the solver adds columns: never rely on their order).
+struct HistoryTable {
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> columns;
+    /// The column called `name`, or nullptr.
+    const std::vector<double>* column(const std::string& name) const;
+};
+
+/// Reads a history.csv. Throws InputError naming the file and line on a malformed row.
+HistoryTable readHistory(const std::filesystem::path& historyCsv);
+
+/// Plots the columns of `wanted` that the history has against its "time" column. Returns
+/// false (and writes nothing) if it has no time column or none of them.
+bool plotHistory(const HistoryTable& history, const std::vector<std::string>& wanted,
+                 const std::string& yTitle, const std::filesystem::path& png, int width = 1000,
+                 int height = 600);
 
 }  // namespace gsph::post

@@ -100,6 +100,10 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         f.write("/particles/plastic_strain", state.plasticStrain.data(), {n});
         f.write("/particles/temperature", state.temperature.data(), {n});
         f.write("/particles/damage", state.damage.data(), {n});
+        std::vector<std::int8_t> transient(n, 0);
+        for (const OversetEntry& e : ref.overset)
+            transient[static_cast<std::size_t>(e.particle)] = 1;
+        f.write("/particles/transient", transient.data(), {n});
         const std::vector<std::array<Index, 2>> broken = brokenBonds(ref.pairs, state.bondIntact);
         f.write("/bonds/broken", broken.empty() ? nullptr : broken.data()->data(),
                 {broken.size(), 2});
@@ -134,6 +138,13 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     s.plasticStrain = readScalars(f, "/particles/plastic_strain", n);
     s.temperature = readScalars(f, "/particles/temperature", n);
     s.damage = readScalars(f, "/particles/damage", n);
+    s.transient.assign(n, 0);
+    if (f.exists("/particles/transient")) {  // since 0.3
+        const std::vector<std::int8_t> t = f.read<std::int8_t>("/particles/transient", dims);
+        if (t.size() != n)
+            throw IoError(path.string() + ": /particles/transient has the wrong length");
+        for (std::size_t a = 0; a < n; ++a) s.transient[a] = t[a] != 0 ? 1 : 0;
+    }
     const std::vector<Index> broken = f.read<std::int32_t>("/bonds/broken", dims);
     if (dims.size() != 2 || dims[1] != 2)
         throw IoError(path.string() + ": /bonds/broken is not an M×2 array");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
-// HDF5, format "gsph-snapshot" 0.1 (provisional until the solver issue #6 settles it; layout in
+// HDF5, format "gsph-snapshot" 0.3 (provisional until the solver issue #6 settles it; layout in
 // docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)
@@ -10,10 +10,13 @@
 //   /particles/volume            N reference quadrature volume ω det M [m³]
 //   /particles/body, space       N int32
 //   /particles/plastic_strain, temperature, damage   N float64
+//   /particles/transient         N int8: 1 if the particle has an overset entry (since 0.3;
+//                                absent in older files, read as 0)
 //   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <vector>
 
@@ -25,7 +28,7 @@ namespace gsph {
 
 inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
-inline constexpr int kSnapshotFormatMinor = 2;
+inline constexpr int kSnapshotFormatMinor = 3;
 
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
@@ -36,6 +39,8 @@ struct Snapshot {
     std::vector<double> volume;
     std::vector<Index> body, space;
     std::vector<double> plasticStrain, temperature, damage;
+    /// 1 if the particle is transient in another space (Reference::overset), else 0.
+    std::vector<std::uint8_t> transient;
     std::vector<std::array<Index, 2>> brokenBonds;  ///< (a, b), a < b
     Provenance provenance;
     Index size() const { return static_cast<Index>(x.size()); }

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // gsph-post on a real run: the arrays read back from the .vtu with VTK's reader equal the
 // snapshot's, the .pvd lists every snapshot, and the pictures are real (expected size, not
-// blank). Bad input gets a one-line error.
+// blank), also at chosen times and for the momentum. Bad input gets a one-line error.
 #include <gtest/gtest.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -16,7 +16,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "core/error.hpp"
 #include "io/snapshot.hpp"
+#include "pictures.hpp"
 #include "support/sample_run.hpp"
 #include "tools/temp_dir.hpp"
 #include "vtk_output.hpp"
@@ -38,12 +40,16 @@ class PostRun : public ::testing::Test {
         ASSERT_EQ(r.status, 0) << r.err;
         r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string());
         ASSERT_EQ(r.status, 0) << r.err;
+        r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string() + " -o " +
+                       (*dir_ / "pictures").string() + " --field displacement --times 1e-5,1");
+        ASSERT_EQ(r.status, 0) << r.err;
     }
     static void TearDownTestSuite() { delete dir_; }
     static TempDir* dir_;
 };
 TempDir* PostRun::dir_ = nullptr;
 
+// Every field of the snapshot, read back with VTK's reader: float64 arrays round-trip exactly.
 TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
     const Snapshot snap = readSnapshot(*dir_ / "run/snapshot_000007.h5");
     vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -51,37 +57,71 @@ TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
     reader->Update();
     vtkUnstructuredGrid* grid = reader->GetOutput();
     ASSERT_EQ(grid->GetNumberOfPoints(), snap.size());
+    ASSERT_EQ(grid->GetNumberOfCells(), snap.size());
     vtkPointData* pd = grid->GetPointData();
-    for (const char* name :
-         {"displacement", "velocity", "stress", "von_mises", "pressure", "J", "body", "space"})
+    const std::vector<std::pair<const char*, int>> arrays = {
+        {"displacement", 3},     {"velocity", 3}, {"stress", 9},
+        {"von_mises", 1},        {"pressure", 1}, {"plastic_strain", 1},
+        {"temperature", 1},      {"damage", 1},   {"J", 1},
+        {"reference_volume", 1}, {"body", 1},     {"space", 1},
+        {"transient", 1}};
+    for (const auto& [name, components] : arrays) {
         ASSERT_NE(pd->GetArray(name), nullptr) << name;
+        EXPECT_EQ(pd->GetArray(name)->GetNumberOfComponents(), components) << name;
+    }
+    auto scalar = [&](const char* name, vtkIdType a) { return pd->GetArray(name)->GetTuple1(a); };
     double worst = 0.0;
     for (vtkIdType a = 0; a < snap.size(); ++a) {
         const auto i = static_cast<std::size_t>(a);
+        EXPECT_EQ(grid->GetCellType(a), VTK_VERTEX);
         double p[3];
         grid->GetPoint(a, p);
         worst = std::max(worst, (Vec3(p[0], p[1], p[2]) - snap.x[i]).norm());
+        const double* u = pd->GetArray("displacement")->GetTuple3(a);
+        worst = std::max(worst, (Vec3(u[0], u[1], u[2]) - (snap.x[i] - snap.X[i])).norm());
         const double* v = pd->GetArray("velocity")->GetTuple3(a);
         worst = std::max(worst, (Vec3(v[0], v[1], v[2]) - snap.v[i]).norm());
         const double* s = pd->GetArray("stress")->GetTuple9(a);
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) EXPECT_EQ(s[3 * r + c], snap.stress[i](r, c));
-        EXPECT_EQ(pd->GetArray("von_mises")->GetTuple1(a), post::vonMises(snap.stress[i]));
-        EXPECT_EQ(pd->GetArray("J")->GetTuple1(a), snap.F[i].determinant());
+        EXPECT_EQ(scalar("von_mises", a), post::vonMises(snap.stress[i]));
+        EXPECT_EQ(scalar("pressure", a), -snap.stress[i].trace() / 3.0);
+        EXPECT_EQ(scalar("plastic_strain", a), snap.plasticStrain[i]);
+        EXPECT_EQ(scalar("temperature", a), snap.temperature[i]);
+        EXPECT_EQ(scalar("damage", a), snap.damage[i]);
+        EXPECT_EQ(scalar("J", a), snap.F[i].determinant());
+        EXPECT_EQ(scalar("reference_volume", a), snap.volume[i]);
+        EXPECT_EQ(scalar("body", a), snap.body[i]);
+        EXPECT_EQ(scalar("space", a), snap.space[i]);
+        EXPECT_EQ(scalar("transient", a), snap.transient[i]);
     }
     EXPECT_EQ(worst, 0.0);  // written as float64: exact round trip
 }
 
+// run.pvd and cracks.pvd list every snapshot with its /time as the timestep (what ParaView
+// shows on its time axis); the sample run breaks no bond: its crack surfaces are empty.
 TEST_F(PostRun, PvdListsEverySnapshot) {
-    std::ifstream in(*dir_ / "run/post/run.pvd");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    const std::string pvd = ss.str();
+    auto slurp = [](const fs::path& p) {
+        std::ifstream in(p);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        return ss.str();
+    };
+    const std::string pvd = slurp(*dir_ / "run/post/run.pvd");
+    const std::string cracks = slurp(*dir_ / "run/post/cracks.pvd");
     for (int k = 0; k <= 10; ++k) {
-        char name[32];
-        std::snprintf(name, sizeof name, "snapshot_%06d.vtu", k);
-        EXPECT_NE(pvd.find(name), std::string::npos) << name;
-        EXPECT_TRUE(fs::exists(*dir_ / "run/post" / name)) << name;
+        char index[16], entry[160];
+        std::snprintf(index, sizeof index, "%06d", k);
+        const double t =
+            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(index) + ".h5")).time;
+        std::snprintf(entry, sizeof entry, "timestep=\"%.9e\" part=\"0\" file=\"snapshot_%s.vtu\"",
+                      t, index);
+        EXPECT_NE(pvd.find(entry), std::string::npos) << entry;
+        EXPECT_TRUE(fs::exists(*dir_ / "run/post" / ("snapshot_" + std::string(index) + ".vtu")));
+        std::snprintf(entry, sizeof entry, "timestep=\"%.9e\" part=\"0\" file=\"crack_%s.vtp\"", t,
+                      index);
+        EXPECT_NE(cracks.find(entry), std::string::npos) << entry;
+        EXPECT_TRUE(fs::exists(*dir_ / "run/post" / ("crack_" + std::string(index) + ".vtp")));
     }
 }
 
@@ -113,6 +153,53 @@ void expectRealPicture(const fs::path& png, int width, int height) {
 TEST_F(PostRun, PicturesAreReal) {
     expectRealPicture(*dir_ / "run/post/final_von_mises.png", 1200, 800);
     expectRealPicture(*dir_ / "run/post/history.png", 1000, 600);
+    expectRealPicture(*dir_ / "run/post/momentum.png", 1000, 600);
+}
+
+// --field displacement --times 1e-5,1: the snapshots nearest to each time, by their /time.
+TEST_F(PostRun, PicturesAtChosenTimes) {
+    std::vector<std::pair<double, std::string>> snapshots;
+    for (int k = 0; k <= 10; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "%06d", k);
+        snapshots.emplace_back(
+            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(name) + ".h5")).time, name);
+    }
+    for (double t : {1e-5, 1.0}) {
+        const auto nearest =
+            std::min_element(snapshots.begin(), snapshots.end(), [t](const auto& p, const auto& q) {
+                return std::abs(p.first - t) < std::abs(q.first - t);
+            });
+        expectRealPicture(*dir_ / "pictures" / ("displacement_" + nearest->second + ".png"), 1200,
+                          800);
+    }
+    EXPECT_TRUE(fs::exists(*dir_ / "pictures/displacement_000010.png"));  // t = 1 s: the last
+}
+
+// history.csv columns are found by name: other helpers add and reorder columns.
+TEST(PostHistory, ColumnsAreReadByName) {
+    TempDir dir;
+    {
+        std::ofstream csv(dir / "history.csv");
+        csv << "time,new_column,momentum_x,kinetic_energy\n0,7,1.5,2\n1e-6,8,2.5,3\n";
+    }
+    const post::HistoryTable h = post::readHistory(dir / "history.csv");
+    ASSERT_NE(h.column("kinetic_energy"), nullptr);
+    EXPECT_EQ(*h.column("kinetic_energy"), (std::vector<double>{2.0, 3.0}));
+    EXPECT_EQ(*h.column("momentum_x"), (std::vector<double>{1.5, 2.5}));
+    EXPECT_EQ(h.column("total_energy"), nullptr);
+    {
+        std::ofstream csv(dir / "bad.csv");
+        csv << "time,kinetic_energy\n0,1\n1e-6,oops\n";
+    }
+    try {
+        post::readHistory(dir / "bad.csv");
+        FAIL() << "a malformed row must be an error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("bad.csv:3: 'oops' is not a number"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(PostCli, MissingRunFolderIsAClearError) {
