@@ -57,8 +57,14 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
     return setup;
 }
 
-std::vector<VelocityConstraint> matchSets(const CaseConfig& c, const ParticleFile& file) {
-    std::vector<VelocityConstraint> out;
+// The [[set]] conditions: kinematic ones become constraints, forces become loads.
+struct SetConditions {
+    std::vector<VelocityConstraint> constraints;
+    std::vector<SetForce> forces;
+};
+
+SetConditions matchSets(const CaseConfig& c, const ParticleFile& file) {
+    SetConditions out;
     for (const SetSpec& s : c.sets) {
         const auto it = file.sets.find(s.name);
         if (it == file.sets.end()) {
@@ -68,12 +74,16 @@ std::vector<VelocityConstraint> matchSets(const CaseConfig& c, const ParticleFil
                              s.name + "' is not in " + c.particles.string() +
                              " (sets there: " + (known.empty() ? "none" : known) + ")");
         }
+        if (s.kind == SetSpec::Kind::Force) {
+            out.forces.push_back({s.name, it->second, s.force});
+            continue;
+        }
         VelocityConstraint vc{s.name, it->second, {}};
-        if (!s.fixed) {
+        if (s.kind == SetSpec::Kind::Velocity) {
             const Vec3 v = s.velocity;
             vc.velocity = [v](double, const Vec3&) { return v; };
         }
-        out.push_back(std::move(vc));
+        out.constraints.push_back(std::move(vc));
     }
     return out;
 }
@@ -83,15 +93,16 @@ class History {
     explicit History(std::filesystem::path path) : path_(std::move(path)) {
         rows_ << "time,step,dt,kinetic_energy,internal_energy,hourglass_work,viscous_work,external_"
                  "work,"
-                 "total_energy,momentum_x,momentum_y,momentum_z,plastic_work,damage_dissipation\n";
+                 "total_energy,momentum_x,momentum_y,momentum_z,plastic_work,damage_dissipation,"
+                 "contact_energy\n";
     }
     void add(const State& s, const EnergyReport& e) {
         char line[512];
         std::snprintf(line, sizeof line,
-                      "%.9e,%ld,%.6e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n",
+                      "%.9e,%ld,%.6e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e,%.9e\n",
                       s.time, s.step, s.dt, e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
-                      e.boundaryWork, e.total(), e.momentum[0], e.momentum[1], e.momentum[2],
-                      e.plasticWork, e.damageDissipation);
+                      e.boundaryWork + e.externalWork, e.total(), e.momentum[0], e.momentum[1],
+                      e.momentum[2], e.plasticWork, e.damageDissipation, e.contactEnergy);
         rows_ << line;
     }
     void flush() const {
@@ -132,14 +143,19 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                          ": particle file: " + e.what());
     }
     BodySetup bodies = matchBodies(c, file);
-    std::vector<VelocityConstraint> constraints = matchSets(c, file);
+    SetConditions sets = matchSets(c, file);
     SolverOptions solverOptions;
     solverOptions.cfl = c.cfl;
     solverOptions.viscosity = c.viscosity;
     solverOptions.hourglass = c.hourglass;
+    solverOptions.contact = {c.contact.betweenBodies, c.contact.penalty, c.contact.distance};
     Simulation sim(buildReference(file, bodies.density, c.kappa), std::move(bodies.materials),
                    solverOptions);
-    for (VelocityConstraint& vc : constraints) sim.constrain(std::move(vc));
+    for (VelocityConstraint& vc : sets.constraints) sim.constrain(std::move(vc));
+    for (SetForce& f : sets.forces) sim.applyForce(std::move(f));
+    for (const WallSpec& w : c.walls)
+        sim.addWall({w.name, w.point, w.normal, w.velocity, w.friction});
+    sim.setGravity(c.gravity);
     const Reference& ref = sim.reference();
     std::vector<Vec3> initial(static_cast<std::size_t>(ref.size()));
     for (Index a = 0; a < ref.size(); ++a)
@@ -158,7 +174,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         totalMass += ref.mass[ia];
         meshMass += ref.density[ia] * ref.volume[ia];
     }
-    char line[256];
+    char line[512];
     std::snprintf(line, sizeof line,
                   "particles %d, pairs %d, mass %.6g kg (ρ0 × mesh volume: %.6g kg)", ref.size(),
                   ref.pairs.pairs(), totalMass, meshMass);
@@ -206,9 +222,11 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     options.log(line);
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
-                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J",
-                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork,
-                  e.plasticWork, e.damageDissipation);
+                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J, "
+                  "contact energy %.3e J",
+                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
+                  e.boundaryWork + e.externalWork, e.plasticWork, e.damageDissipation,
+                  e.contactEnergy);
     options.log(line);
     return summary;
 }
