@@ -10,7 +10,7 @@
 namespace gsph {
 
 RigidWalls::RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vector<double> stiffness,
-                       double distance)
+                       const ContactShapes& shapes)
     : ref_(&ref), walls_(std::move(walls)), stiffness_(std::move(stiffness)) {
     for (Wall& w : walls_) {
         const double length = w.normal.norm();
@@ -21,10 +21,11 @@ RigidWalls::RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vecto
         w.normal /= length;
     }
     if (walls_.empty()) return;
-    if (!(distance > 0.0)) throw InputError("contact distance factor must be > 0");
     const auto n = static_cast<std::size_t>(ref.size());
-    radius_.resize(n);
-    for (std::size_t a = 0; a < n; ++a) radius_[a] = 0.5 * distance * ref.spacing[a];
+    radius_.resize(n * walls_.size());
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t w = 0; w < walls_.size(); ++w)
+            radius_[a * walls_.size() + w] = shapes.radius(a, walls_[w].normal);
     energy_.resize(n);
     pushPower_.resize(n);
 }
@@ -40,8 +41,10 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
         const auto ia = static_cast<std::size_t>(a);
         Vec3 total = Vec3::Zero(), tangential = Vec3::Zero();
         double u = 0.0, push = 0.0, w2 = 0.0;
-        for (const Wall& w : walls_) {
-            const double gap = radius_[ia] - (x[ia] - (w.point + t * w.velocity)).dot(w.normal);
+        for (std::size_t iw = 0; iw < walls_.size(); ++iw) {
+            const Wall& w = walls_[iw];
+            const double gap = radius_[ia * walls_.size() + iw] -
+                               (x[ia] - (w.point + t * w.velocity)).dot(w.normal);
             if (!(gap > 0.0)) continue;
             const double k = stiffness_[ia], fn = k * gap;
             const Vec3 normalForce = fn * w.normal;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Rigid planar walls (issue #6; docs/theory.md "Walls"). A wall is the infinite plane through
 // p(t) = point + velocity·t with unit normal n pointing into the bodies' side. A particle
-// penetrates by g_a = ρ_a − (x_a − p(t))·n (ρ_a = ½ δ ℓ_a, its contact radius, the same as in
-// penalty_contact.hpp) and, when g_a > 0, feels
+// penetrates by g_a = ρ_a(n) − (x_a − p(t))·n (ρ_a(n) its contact ellipsoid's radius along n,
+// penalty_contact.hpp: half its cell's width across the wall) and, when g_a > 0, feels
 //   normal:  f_n = k_a g_a n                      (k_a of contactStiffness, U = ½ k_a g_a²)
 //   Coulomb: f_t = −min(μ |f_n|, m_a |w_t|/Δt) w_t/|w_t|,  w_t the tangential part of v_a − v_wall,
 // the min being the stick limit: friction never reverses the sliding within a step. The power
@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/penalty_contact.hpp"
 #include "core/types.hpp"
 #include "particles/reference.hpp"
 
@@ -36,9 +37,10 @@ struct WallResult {
 class RigidWalls {
   public:
     RigidWalls() = default;
-    /// Throws InputError on a zero normal or μ < 0. `stiffness`: k_a; `distance`: δ.
+    /// Throws InputError on a zero normal or μ < 0. `stiffness`: k_a; `shapes`: the contact
+    /// ellipsoids (contactShapes).
     RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vector<double> stiffness,
-               double distance);
+               const ContactShapes& shapes);
 
     bool active() const { return !walls_.empty(); }
     const std::vector<Wall>& walls() const { return walls_; }
@@ -54,7 +56,8 @@ class RigidWalls {
   private:
     const Reference* ref_ = nullptr;
     std::vector<Wall> walls_;
-    std::vector<double> stiffness_, radius_;
+    std::vector<double> stiffness_;
+    std::vector<double> radius_;  ///< ρ_a(n_w), particle-major: radius_[a · walls + w]
     std::vector<double> energy_, pushPower_, partial_;  ///< per particle scratch
 };
 

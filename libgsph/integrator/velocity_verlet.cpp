@@ -224,8 +224,9 @@ void VelocityVerlet::setUpContactAndLoads(const Loads& loads, std::vector<Wall> 
     const bool pairs = options_.contact.betweenBodies && bodies_.size() > 1;
     if (pairs || !walls.empty()) {
         const std::vector<double> k = contactStiffness(ref_, c2, options_.contact.penalty);
-        if (pairs) pairContact_ = PenaltyContact(ref_, k, options_.contact);
-        walls_ = RigidWalls(ref_, std::move(walls), k, options_.contact.distance);
+        ContactShapes shapes = contactShapes(ref_, options_.contact.distance);
+        walls_ = RigidWalls(ref_, std::move(walls), k, shapes);
+        if (pairs) pairContact_ = PenaltyContact(ref_, k, std::move(shapes), options_.contact);
     }
     if (!loads.empty()) load_ = loadPerParticle(ref_, loads);
     if (pairContact_.active() || walls_.active()) work_.contactFrequency2.assign(n, 0.0);

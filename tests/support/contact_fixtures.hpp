@@ -9,6 +9,7 @@
 #include <limits>
 #include <vector>
 
+#include "contact/penalty_contact.hpp"
 #include "spaces/analytic_maps.hpp"
 
 namespace gsph::testing {
@@ -45,15 +46,18 @@ inline Reference boxBodies(const std::vector<Box>& boxes, double kappa = 1.2, in
     return out;
 }
 
-/// Smallest |x_a − x_b| / (ρ_a + ρ_b) over pairs of different bodies (ρ = ½ δ ℓ, the contact
-/// radius of contact/penalty_contact.hpp), by brute force: independent of the contact search.
+/// Smallest |x_a − x_b| / d_ab(n) over pairs of different bodies (d_ab(n) = ρ_a(n) + ρ_b(n),
+/// the contact distance of contact/penalty_contact.hpp along the pair), by brute force:
+/// independent of the contact search.
 inline double smallestContactRatio(const Reference& ref, const std::vector<Vec3>& x,
                                    double distance = 1.0) {
+    const ContactShapes shapes = contactShapes(ref, distance);
     double smallest = std::numeric_limits<double>::infinity();
     for (std::size_t a = 0; a < x.size(); ++a)
         for (std::size_t b = a + 1; b < x.size(); ++b) {
             if (ref.body[a] == ref.body[b]) continue;
-            const double d = 0.5 * distance * (ref.spacing[a] + ref.spacing[b]);
+            const Vec3 n = (x[a] - x[b]).normalized();
+            const double d = shapes.radius(a, n) + shapes.radius(b, n);
             smallest = std::min(smallest, (x[a] - x[b]).norm() / d);
         }
     return smallest;

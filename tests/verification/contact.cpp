@@ -107,13 +107,17 @@ TEST(Contact, TwoBlocksConserveMomentumAndDoNotInterpenetrate) {
         worstMomentum = std::max(worstMomentum, (e.momentum - e0.momentum).norm() / scale);
         worstEnergy = std::max(worstEnergy, std::abs(e.total() - e0.total()) / e0.kinetic);
         smallest = std::min(smallest, testing::smallestContactRatio(ref, s.x));
-        // Nominal faces: A's outermost particles + ½ℓ_a against B's − ½ℓ_b.
+        // Nominal faces: A's outermost particles + ½ℓ_a against B's − ½ℓ_b, B's only over A's
+        // footprint (outside it B's face runs on past A's face plane without touching A).
         double faceA = -1e300, faceB = 1e300;
-        for (std::size_t p = 0; p < s.x.size(); ++p)
+        for (std::size_t p = 0; p < s.x.size(); ++p) {
+            const bool over = s.x[p][1] > 0.0 && s.x[p][1] < a.size[1] && s.x[p][2] > 0.0 &&
+                              s.x[p][2] < a.size[2];
             if (ref.body[p] == 0)
                 faceA = std::max(faceA, s.x[p][0] + 0.5 * ref.spacing[p]);
-            else
+            else if (over)
                 faceB = std::min(faceB, s.x[p][0] - 0.5 * ref.spacing[p]);
+        }
         faceOverlap = std::max(faceOverlap, faceA - faceB);
         maxPairs = std::max(maxPairs, sim.integrator().contact().pairsInContact());
     });
