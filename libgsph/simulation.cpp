@@ -52,9 +52,25 @@ void Simulation::setVelocities(const std::vector<Vec3>& velocities) {
     state_.v = velocities;
 }
 
+void Simulation::setGravity(const Vec3& g) {
+    if (integrator_) throw Error("gravity must be set before the first step");
+    loads_.gravity = g;
+}
+
+void Simulation::applyForce(SetForce force) {
+    if (integrator_) throw Error("forces must be set before the first step");
+    loads_.setForces.push_back(std::move(force));
+}
+
+void Simulation::addWall(Wall wall) {
+    if (integrator_) throw Error("walls must be set before the first step");
+    walls_.push_back(std::move(wall));
+}
+
 void Simulation::start() {
     if (integrator_) return;
-    integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_);
+    integrator_ =
+        std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);
     integrator_->initialize(state_);
 }
 

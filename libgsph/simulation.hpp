@@ -5,10 +5,13 @@
 //   Simulation sim(std::move(ref), {HypoElastic(steel)}, options);  // builds pairs + geometry
 //   sim.constrain({"clamp", clampIds, {}});                           // fixed set
 //   sim.setVelocity([](const Vec3& X) { return Vec3(0, 0, -10); });
+//   sim.addWall({"floor", Vec3::Zero(), Vec3::UnitZ()});             // rigid plane z = 0
+//   sim.setGravity(Vec3(0, 0, -9.81));
 //   sim.advanceTo(1e-3);
 //
-// Materials are indexed by body id. Constraints and initial velocities are set before the
-// first step (start() or the first advanceTo()).
+// Materials are indexed by body id. Constraints, loads, walls and initial velocities are set
+// before the first step (start() or the first advanceTo()). Contact between bodies is on by
+// default (SolverOptions::contact).
 #pragma once
 
 #include <functional>
@@ -39,6 +42,10 @@ class Simulation {
     void setVelocity(const std::function<Vec3(const Vec3& X)>& velocity);
     /// One initial velocity per particle (size must equal the particle count).
     void setVelocities(const std::vector<Vec3>& velocities);
+    void setGravity(const Vec3& g);
+    /// A total force on a particle set, shared by mass (boundary/loads.hpp).
+    void applyForce(SetForce force);
+    void addWall(Wall wall);
 
     /// Computes the initial accelerations and time step; called by the first step if needed.
     void start();
@@ -67,6 +74,8 @@ class Simulation {
     SolverOptions options_;
     std::vector<BodyRange> bodies_;
     std::vector<VelocityConstraint> constraints_;
+    Loads loads_;
+    std::vector<Wall> walls_;
     State state_;
     std::unique_ptr<VelocityVerlet> integrator_;
 };

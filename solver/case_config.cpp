@@ -113,7 +113,7 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     if (!run) throw InputError(file + ":1: missing table [run]");
     TableReader r(file, *run, "[run]",
                   {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity",
-                   "hourglass", "checkpoint_interval", "min_dt_ratio"});
+                   "hourglass", "checkpoint_interval", "min_dt_ratio", "gravity"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -135,6 +135,59 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.minDtRatio = r.number("min_dt_ratio", c.minDtRatio, false, false);
     if (c.minDtRatio >= 1.0)
         r.fail(run->get("min_dt_ratio"), "'min_dt_ratio' in [run] must be < 1 (0 = off)");
+    if (r.has("gravity")) c.gravity = r.vector("gravity");
+}
+
+void readContact(const std::string& file, const toml::table& root, CaseConfig& c) {
+    const toml::node* n = root.get("contact");
+    if (!n) return;
+    const toml::table* t = n->as_table();
+    if (!t)
+        throw InputError(file + ":" + std::to_string(n->source().begin.line) +
+                         ": 'contact' must be a table [contact]");
+    TableReader r(file, *t, "[contact]", {"between_bodies", "penalty", "distance"});
+    c.contact.betweenBodies = r.flag("between_bodies", c.contact.betweenBodies);
+    c.contact.penalty = r.number("penalty", c.contact.penalty, false, true);
+    c.contact.distance = r.number("distance", c.contact.distance, false, true);
+}
+
+WallSpec readWall(const std::string& file, const toml::table& t, std::size_t index) {
+    TableReader r(file, t, "[[wall]]", {"name", "point", "normal", "velocity", "friction"});
+    WallSpec w;
+    w.line = r.line();
+    w.name = r.text("name", "wall " + std::to_string(index), false);
+    if (!r.has("point")) r.fail(nullptr, "missing key 'point' in [[wall]]");
+    if (!r.has("normal")) r.fail(nullptr, "missing key 'normal' in [[wall]]");
+    w.point = r.vector("point");
+    w.normal = r.vector("normal");
+    if (w.normal.isZero(0.0)) r.fail(t.get("normal"), "'normal' in [[wall]] must not be zero");
+    if (r.has("velocity")) w.velocity = r.vector("velocity");
+    w.friction = r.number("friction", 0.0, false, false);
+    return w;
+}
+
+SetSpec readSet(const std::string& file, const toml::table& t) {
+    TableReader r(file, t, "[[set]]", {"name", "fixed", "velocity", "force"});
+    SetSpec s;
+    s.line = r.line();
+    s.name = r.text("name", "", true);
+    s.fixed = r.flag("fixed", false);
+    if (r.has("force") && (s.fixed || r.has("velocity")))
+        r.fail(t.get("force"), "set '" + s.name +
+                                   "' has a 'force' and a kinematic condition (fixed or "
+                                   "velocity): give one of the three");
+    if (r.has("velocity")) {
+        if (s.fixed)
+            r.fail(t.get("velocity"), "set '" + s.name + "' is both fixed and given a velocity");
+        s.kind = SetSpec::Kind::Velocity;
+        s.velocity = r.vector("velocity");
+    } else if (r.has("force")) {
+        s.kind = SetSpec::Kind::Force;
+        s.force = r.vector("force");
+    } else if (!s.fixed) {
+        r.fail(nullptr, "set '" + s.name + "' needs 'fixed = true', a 'velocity' or a 'force'");
+    }
+    return s;
 }
 
 }  // namespace
@@ -153,12 +206,18 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
     c.caseFile = path;
     for (const auto& [key, node] : root) {
         const std::string k(key.str());
-        if (k != "run" && k != "material" && k != "body" && k != "set")
+        if (k != "run" && k != "material" && k != "body" && k != "set" && k != "wall" &&
+            k != "contact")
             throw InputError(file + ":" + std::to_string(node.source().begin.line) +
                              ": unknown table '" + k +
-                             "' (expected [run], [[material]], [[body]], [[set]])");
+                             "' (expected [run], [contact], [[material]], [[body]], [[set]], "
+                             "[[wall]])");
     }
     readRun(file, root, c);
+    readContact(file, root, c);
+    if (const toml::array* walls = arrayOfTables(file, root, "wall"))
+        for (const toml::node& n : *walls)
+            c.walls.push_back(readWall(file, *n.as_table(), c.walls.size()));
 
     if (const toml::array* materials = arrayOfTables(file, root, "material"))
         for (const toml::node& n : *materials) {
@@ -189,22 +248,7 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
     if (c.bodies.empty()) throw InputError(file + ": no [[body]] defined");
 
     if (const toml::array* sets = arrayOfTables(file, root, "set"))
-        for (const toml::node& n : *sets) {
-            TableReader r(file, *n.as_table(), "[[set]]", {"name", "fixed", "velocity"});
-            SetSpec s;
-            s.line = r.line();
-            s.name = r.text("name", "", true);
-            s.fixed = r.flag("fixed", false);
-            if (r.has("velocity")) {
-                if (s.fixed)
-                    r.fail(n.as_table()->get("velocity"),
-                           "set '" + s.name + "' is both fixed and given a velocity");
-                s.velocity = r.vector("velocity");
-            } else if (!s.fixed) {
-                r.fail(nullptr, "set '" + s.name + "' needs 'fixed = true' or a 'velocity'");
-            }
-            c.sets.push_back(s);
-        }
+        for (const toml::node& n : *sets) c.sets.push_back(readSet(file, *n.as_table()));
     return c;
 }
 

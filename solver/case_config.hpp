@@ -22,10 +22,30 @@ struct BodySpec {
 };
 
 struct SetSpec {
-    std::string name;              ///< named particle set of the particle file
+    enum class Kind { Fixed, Velocity, Force };
+    std::string name;  ///< named particle set of the particle file
+    Kind kind = Kind::Fixed;
     bool fixed = false;            ///< v = 0
-    Vec3 velocity = Vec3::Zero();  ///< prescribed velocity [m/s] when not fixed
+    Vec3 velocity = Vec3::Zero();  ///< prescribed velocity [m/s] (Kind::Velocity)
+    Vec3 force = Vec3::Zero();     ///< total force on the set, shared by mass [N] (Kind::Force)
     int line = 0;
+};
+
+/// A rigid plane (libgsph/contact/walls.hpp); the normal points to the bodies' side.
+struct WallSpec {
+    std::string name;
+    Vec3 point = Vec3::Zero();     ///< [m]
+    Vec3 normal = Vec3::UnitZ();   ///< non-zero (normalised by the library)
+    Vec3 velocity = Vec3::Zero();  ///< [m/s]
+    double friction = 0.0;         ///< Coulomb μ
+    int line = 0;
+};
+
+/// [contact]: the penalty law of libgsph/contact/penalty_contact.hpp.
+struct ContactSpec {
+    bool betweenBodies = true;
+    double penalty = 4.0;   ///< s
+    double distance = 1.0;  ///< δ
 };
 
 struct CaseConfig {
@@ -43,6 +63,9 @@ struct CaseConfig {
     double checkpointInterval = 0.0;
     /// A stable Δt below this fraction of the first Δt stops the run (0 = off).
     double minDtRatio = 1e-3;
+    Vec3 gravity = Vec3::Zero();  ///< [run] gravity [m/s²]
+    ContactSpec contact;
+    std::vector<WallSpec> walls;
     std::vector<MaterialSpec> materials;
     std::vector<BodySpec> bodies;
     std::vector<SetSpec> sets;

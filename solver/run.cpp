@@ -64,8 +64,14 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
     return setup;
 }
 
-std::vector<VelocityConstraint> matchSets(const CaseConfig& c, const ParticleFile& file) {
-    std::vector<VelocityConstraint> out;
+// The [[set]] conditions: kinematic ones become constraints, forces become loads.
+struct SetConditions {
+    std::vector<VelocityConstraint> constraints;
+    std::vector<SetForce> forces;
+};
+
+SetConditions matchSets(const CaseConfig& c, const ParticleFile& file) {
+    SetConditions out;
     for (const SetSpec& s : c.sets) {
         const auto it = file.sets.find(s.name);
         if (it == file.sets.end()) {
@@ -75,12 +81,16 @@ std::vector<VelocityConstraint> matchSets(const CaseConfig& c, const ParticleFil
                              s.name + "' is not in " + c.particles.string() +
                              " (sets there: " + (known.empty() ? "none" : known) + ")");
         }
+        if (s.kind == SetSpec::Kind::Force) {
+            out.forces.push_back({s.name, it->second, s.force});
+            continue;
+        }
         VelocityConstraint vc{s.name, it->second, {}};
-        if (!s.fixed) {
+        if (s.kind == SetSpec::Kind::Velocity) {
             const Vec3 v = s.velocity;
             vc.velocity = [v](double, const Vec3&) { return v; };
         }
-        out.push_back(std::move(vc));
+        out.constraints.push_back(std::move(vc));
     }
     return out;
 }
@@ -229,16 +239,21 @@ class RunOutputs {
 // started).
 std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleFile& file,
                                             BodySetup& bodies) {
-    std::vector<VelocityConstraint> constraints = matchSets(c, file);
+    SetConditions sets = matchSets(c, file);
     SolverOptions solverOptions;
     solverOptions.cfl = c.cfl;
     solverOptions.viscosity = c.viscosity;
     solverOptions.hourglass = c.hourglass;
     solverOptions.minTimeStepRatio = c.minDtRatio;
     solverOptions.bondStretch = bodies.bondStretch;
+    solverOptions.contact = {c.contact.betweenBodies, c.contact.penalty, c.contact.distance};
     auto sim = std::make_unique<Simulation>(buildReference(file, bodies.density, c.kappa),
                                             std::move(bodies.materials), solverOptions);
-    for (VelocityConstraint& vc : constraints) sim->constrain(std::move(vc));
+    for (VelocityConstraint& vc : sets.constraints) sim->constrain(std::move(vc));
+    for (SetForce& f : sets.forces) sim->applyForce(std::move(f));
+    for (const WallSpec& w : c.walls)
+        sim->addWall({w.name, w.point, w.normal, w.velocity, w.friction});
+    sim->setGravity(c.gravity);
     return sim;
 }
 
@@ -249,7 +264,7 @@ std::string sizeLine(const Reference& ref) {
         totalMass += ref.mass[ia];
         meshMass += ref.density[ia] * ref.volume[ia];
     }
-    char line[256];
+    char line[512];
     std::snprintf(line, sizeof line,
                   "particles %d, pairs %d, mass %.6g kg (ρ0 × mesh volume: %.6g kg)", ref.size(),
                   ref.pairs.pairs(), totalMass, meshMass);
@@ -257,7 +272,7 @@ std::string sizeLine(const Reference& ref) {
 }
 
 void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
-    char line[320];
+    char line[512];
     std::snprintf(line, sizeof line,
                   "done: t = %.4e s, %ld steps, %d snapshots, %.2f s wall, %.3e particle-steps/s",
                   summary.time, summary.steps, summary.snapshots, summary.wallSeconds,
@@ -265,9 +280,11 @@ void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
     log.add(line);
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
-                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J",
-                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork, e.boundaryWork,
-                  e.plasticWork, e.damageDissipation);
+                  "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J, "
+                  "contact energy %.3e J",
+                  e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
+                  e.boundaryWork + e.externalWork, e.plasticWork, e.damageDissipation,
+                  e.contactEnergy);
     log.add(line);
 }
 

@@ -2,8 +2,9 @@
 // Energy and momentum of a run, for the history and the conservation tests.
 //   kinetic = Σ ½ m |v|²;  elastic = Σ V_a J_a ψ(σ_a, history_a) (ψ: the material's stored
 //   energy per current volume, V_a the quadrature volume of DESIGN §4); the ledger's works
-//   (integrated by the integrator). Balance:
-//   kinetic + elastic + viscous + hourglass + plastic + damage − boundary = const.
+//   (integrated by the integrator); the contact springs' potential. Balance:
+//   kinetic + elastic + viscous + hourglass + plastic + damage + contact − boundary − external
+//   = const.
 #pragma once
 
 #include <vector>
@@ -20,11 +21,14 @@ struct EnergyReport {
     double boundaryWork = 0.0;       ///< work done on the bodies by prescribed velocities
     double plasticWork = 0.0;        ///< dissipated by plastic flow
     double damageDissipation = 0.0;  ///< elastic energy lost by failing particles
+    double contactEnergy = 0.0;      ///< potential of the penalty springs (bodies, walls)
+    double externalWork = 0.0;       ///< work of gravity, set forces and walls on the bodies
     Vec3 momentum = Vec3::Zero();
-    /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage − boundary.
+    /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage + contact
+    /// − boundary − external.
     double total() const {
-        return kinetic + elastic + viscousWork + hourglassWork + plasticWork + damageDissipation -
-               boundaryWork;
+        return kinetic + elastic + viscousWork + hourglassWork + plasticWork + damageDissipation +
+               contactEnergy - boundaryWork - externalWork;
     }
 };
 

@@ -188,7 +188,8 @@ void StepWorkspace::resize(std::size_t n, bool overset) {
 }
 
 VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
-                               std::vector<VelocityConstraint> constraints, SolverOptions options)
+                               std::vector<VelocityConstraint> constraints, SolverOptions options,
+                               const Loads& loads, std::vector<Wall> walls)
     : ref_(ref),
       bodies_(std::move(bodies)),
       constraints_(std::move(constraints)),
@@ -217,6 +218,30 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
         }
     if (options_.viscosity.enabled()) work_.parts.viscous.assign(n, Vec3::Zero());
     if (options_.hourglass != 0.0) work_.parts.hourglass.assign(n, Vec3::Zero());
+    setUpContactAndLoads(loads, std::move(walls));
+}
+
+// Penalty stiffness from each body's P-wave modulus (contact/penalty_contact.hpp), the pair
+// contact between bodies, the walls and the constant loads; scratch only for what is on.
+void VelocityVerlet::setUpContactAndLoads(const Loads& loads, std::vector<Wall> walls) {
+    const auto n = static_cast<std::size_t>(ref_.size());
+    std::vector<double> c2(n, 0.0);
+    for (const BodyRange& body : bodies_) {
+        const ElasticConstants& e = elasticConstants(*body.material);
+        for (Index a = body.begin; a < body.end; ++a)
+            c2[static_cast<std::size_t>(a)] = e.pWaveModulus() / e.density;
+    }
+    const bool pairs = options_.contact.betweenBodies && bodies_.size() > 1;
+    if (pairs || !walls.empty()) {
+        const std::vector<double> k = contactStiffness(ref_, c2, options_.contact.penalty);
+        ContactShapes shapes = contactShapes(ref_, options_.contact.distance);
+        walls_ = RigidWalls(ref_, std::move(walls), k, shapes);
+        if (pairs) pairContact_ = PenaltyContact(ref_, k, std::move(shapes), options_.contact);
+    }
+    if (!loads.empty()) load_ = loadPerParticle(ref_, loads);
+    if (pairContact_.active() || walls_.active()) work_.contactFrequency2.assign(n, 0.0);
+    if (walls_.active() || !load_.empty()) work_.externalForce.assign(n, Vec3::Zero());
+    if (walls_.active()) work_.wallForce.assign(n, Vec3::Zero());
 }
 
 // SoA copies of x_a and v_a for the stencil loops (ParticleFields).
@@ -269,10 +294,46 @@ void VelocityVerlet::computeAccelerations(State& state) {
         internalForce(ref_, work_.fields, work_.factors, work_.blocks[b], fo, work_.force,
                       work_.parts, bonds_.view(state), bonds_.G().data());
     }
+    addContactAndLoads(state);
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.acceleration[ia] = work_.force[ia] / ref_.mass[ia];
     });
+}
+
+// Step 5's forces beyond the internal one, at x_{n+1} and t_{n+1} (friction from v_{n+½}),
+// added to each particle's force in a fixed order: contact between bodies, walls, loads.
+void VelocityVerlet::addContactAndLoads(State& state) {
+    const double t0 = omp_get_wtime();
+    double energy = 0.0;
+    if (!work_.contactFrequency2.empty())
+        std::fill(work_.contactFrequency2.begin(), work_.contactFrequency2.end(), 0.0);
+    if (!work_.externalForce.empty())
+        std::fill(work_.externalForce.begin(), work_.externalForce.end(), Vec3::Zero());
+    if (pairContact_.active())
+        energy += pairContact_.addForces(state.x, work_.force, work_.contactFrequency2);
+    wallPushPower_ = 0.0;
+    if (walls_.active()) {
+        const WallResult w =
+            walls_.addForces(state.time, state.dt, state.x, state.v, work_.force,
+                             work_.externalForce, work_.contactFrequency2, work_.wallForce);
+        energy += w.energy;
+        wallPushPower_ = w.pushPower;
+    }
+    if (!load_.empty())
+        parallelFor(ref_.size(), [&](Index a) {
+            const auto ia = static_cast<std::size_t>(a);
+            work_.force[ia] += load_[ia];
+            work_.externalForce[ia] += load_[ia];
+        });
+    state.ledger.contactEnergy = energy;
+    times_.contact += omp_get_wtime() - t0;
+}
+
+// Power of gravity, set forces and walls on the bodies: Σ (load + friction)·v + Σ f_n·v_wall.
+double VelocityVerlet::externalPower(const State& state) {
+    if (work_.externalForce.empty()) return wallPushPower_;
+    return wallPushPower_ + nonConservativePower(state, work_.externalForce);
 }
 
 void VelocityVerlet::applyConstraints(State& state, double t) {
@@ -330,7 +391,11 @@ double VelocityVerlet::stableTimeStep(const State& state) const {
     if (options_.fixedTimeStep > 0.0) return options_.fixedTimeStep;
     const auto ratioOf = [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
-        return work_.lengthScale[ia] / (work_.factors.soundSpeed[ia] + state.v[ia].norm());
+        const double wave =
+            work_.lengthScale[ia] / (work_.factors.soundSpeed[ia] + state.v[ia].norm());
+        if (work_.contactFrequency2.empty() || work_.contactFrequency2[ia] == 0.0) return wave;
+        // Springs in parallel: ω² = (2/wave)² + ω_contact², Δt = CFL · 2/ω.
+        return 1.0 / std::sqrt(1.0 / (wave * wave) + 0.25 * work_.contactFrequency2[ia]);
     };
     const double ratio = parallelMin(ref_.size(), std::numeric_limits<double>::infinity(), ratioOf);
     const double dt = options_.cfl * ratio;
@@ -368,6 +433,8 @@ void VelocityVerlet::initialize(State& state) {
     L.viscousPower = nonConservativePower(state, work_.parts.viscous);
     L.hourglassPower = nonConservativePower(state, work_.parts.hourglass);
     L.boundaryPower = boundaryPower(state);
+    L.externalPower = externalPower(state);
+    times_.contact = 0.0;  // phase times count the steps only
 }
 
 void VelocityVerlet::resume(const State& state) {
@@ -399,6 +466,7 @@ void VelocityVerlet::step(State& state) {
     updateKinematicsAndStress(state, dt, false);
     bookDissipation(state);
     const double t2 = omp_get_wtime();
+    const double contactBefore = times_.contact;
     computeAccelerations(state);
     const double t3 = omp_get_wtime();
     // 6: second half kick.
@@ -414,6 +482,9 @@ void VelocityVerlet::step(State& state) {
     const double pv = nonConservativePower(state, work_.parts.viscous);
     const double ph = nonConservativePower(state, work_.parts.hourglass);
     const double pb = boundaryPower(state);
+    const double pe = externalPower(state);
+    L.externalWork += 0.5 * dt * (L.externalPower + pe);
+    L.externalPower = pe;
     L.viscousWork -= 0.5 * dt * (L.viscousPower + pv);
     L.hourglassWork -= 0.5 * dt * (L.hourglassPower + ph);
     L.boundaryWork += 0.5 * dt * (L.boundaryPower + pb);
@@ -424,7 +495,7 @@ void VelocityVerlet::step(State& state) {
     state.dt = stableTimeStep(state);
     const double t4 = omp_get_wtime();
     times_.kinematicsAndStress += t2 - t1;
-    times_.forces += t3 - t2;
+    times_.forces += (t3 - t2) - (times_.contact - contactBefore);
     times_.other += (t1 - t0) + (t4 - t3);
 }
 

@@ -6,9 +6,12 @@
 //   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
 //      (Johnson–Cook) also advance ε̄p, T, D, e and book their plastic work and the energy
 //      lost by failing particles in the ledger
-//   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m
+//   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m, f = internal force + penalty contact between
+//      bodies + rigid walls (friction from v_{n+½}) + gravity and set forces (contact/,
+//      boundary/loads.hpp)
 //   6. v_{n+1} = v_{n+½} + ½Δt a_{n+1}                   (then constraints at t_{n+1})
-//   7. Δt_{n+1} = CFL · min_a ℓ_a/(c_a + |v_a|), ℓ_a = current particle spacing
+//   7. Δt_{n+1} = CFL · min_a ℓ_a/(c_a + |v_a|), ℓ_a = current particle spacing; a particle in
+//      contact takes CFL / √(((c_a + |v_a|)/ℓ_a)² + ω_a²/4), ω_a its contact frequency bound
 // On entry `state` holds t_n, x_n, v_n, a_n, F_n, σ_n, Δt_n; on exit the same at n+1.
 // Throws NumericalError (particle, time) on a NaN or an inverted particle (J ≤ 0), and on a
 // collapsed time step (Δt_{n+1} not finite, ≤ 0, or below minTimeStepRatio · Δt_0); the
@@ -23,6 +26,9 @@
 #include <vector>
 
 #include "boundary/constraints.hpp"
+#include "boundary/loads.hpp"
+#include "contact/penalty_contact.hpp"
+#include "contact/walls.hpp"
 #include "failure/brittle_bonds.hpp"
 #include "forces/internal_force.hpp"
 #include "materials/material.hpp"
@@ -42,6 +48,7 @@ struct SolverOptions {
     /// > 0: a stable Δt below this fraction of the run's first Δt (State::initialDt) stops the
     /// run with NumericalError naming the particle that limits it (0 = only Δt ≤ 0 or NaN).
     double minTimeStepRatio = 0.0;
+    ContactOptions contact;  ///< penalty contact between bodies and with walls
 };
 
 /// Contiguous range of one body and its material.
@@ -53,7 +60,8 @@ struct BodyRange {
 /// Wall time spent in each phase of the steps taken so far [s] (for benchmarks and logs).
 struct PhaseTimes {
     double kinematicsAndStress = 0.0;  ///< steps 3–4
-    double forces = 0.0;               ///< step 5
+    double forces = 0.0;               ///< step 5 without contact
+    double contact = 0.0;              ///< step 5: contact search and forces, walls, loads
     double other = 0.0;                ///< kicks, drift, constraints, energy ledger, Δt
 };
 
@@ -70,13 +78,18 @@ struct StepWorkspace {
     /// tracks a history; summed into the ledger in a fixed order).
     std::vector<double> plasticWork, damageDissipation;
     std::vector<double> partialSums;  ///< scratch of deterministicSum
+    // Contact and loads (sized only when the run has them).
+    std::vector<double> contactFrequency2;  ///< ω_a² bound of the contact springs [1/s²]
+    std::vector<Vec3> externalForce;        ///< loads + wall friction: their power is Σ f·v
+    std::vector<Vec3> wallForce;            ///< the walls' force on each particle [N]
     void resize(std::size_t n, bool overset = false);
 };
 
 class VelocityVerlet {
   public:
     VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
-                   std::vector<VelocityConstraint> constraints, SolverOptions options);
+                   std::vector<VelocityConstraint> constraints, SolverOptions options,
+                   const Loads& loads = {}, std::vector<Wall> walls = {});
 
     /// Computes a_n, the stress factors and Δt_n for a state (once, before the first step).
     void initialize(State& state);
@@ -90,12 +103,16 @@ class VelocityVerlet {
     const SolverOptions& options() const { return options_; }
     const PhaseTimes& phaseTimes() const { return times_; }
     const BrittleBonds& bonds() const { return bonds_; }
+    const PenaltyContact& contact() const { return pairContact_; }
 
   private:
     void updateKinematicsAndStress(State& state, double dt, bool atRest);
     void throwOnFailure(const State& state) const;
     void packKinematics(const State& state, Index a);
     void computeAccelerations(State& state);
+    void setUpContactAndLoads(const Loads& loads, std::vector<Wall> walls);
+    void addContactAndLoads(State& state);
+    double externalPower(const State& state);
     void applyConstraints(State& state, double t);
     double nonConservativePower(const State& state, const std::vector<Vec3>& part);
     void bookDissipation(State& state);
@@ -107,6 +124,10 @@ class VelocityVerlet {
     std::vector<VelocityConstraint> constraints_;
     SolverOptions options_;
     BrittleBonds bonds_;
+    PenaltyContact pairContact_;
+    RigidWalls walls_;
+    std::vector<Vec3> load_;      ///< constant load per particle (empty: none)
+    double wallPushPower_ = 0.0;  ///< Σ f_n·v_wall at the last force evaluation [W]
     StepWorkspace work_;
     PhaseTimes times_;
 };

@@ -18,10 +18,16 @@ struct EnergyLedger {
     double plasticWork = 0.0;    ///< dissipated by plastic flow, Σ V J Δw_p (≥ 0)
     /// Elastic energy the failed particles lost when their damage reached 1 (DESIGN §5).
     double damageDissipation = 0.0;
+    /// Done on the bodies by gravity, set forces and walls (their push and friction) [J].
+    double externalWork = 0.0;
+    /// Potential of the penalty springs (contact between bodies, walls) at the current x [J]:
+    /// a function of x, stored so that the history and a restart need no contact search.
+    double contactEnergy = 0.0;
     // Powers at the current time, for the trapezoidal rule of the next step [W].
     double viscousPower = 0.0;
     double hourglassPower = 0.0;
     double boundaryPower = 0.0;
+    double externalPower = 0.0;
 };
 
 struct State {
@@ -86,6 +92,9 @@ struct State {
         visit("ledger/viscous_power", s.ledger.viscousPower);
         visit("ledger/hourglass_power", s.ledger.hourglassPower);
         visit("ledger/boundary_power", s.ledger.boundaryPower);
+        visit("ledger/external_work", s.ledger.externalWork);
+        visit("ledger/contact_energy", s.ledger.contactEnergy);
+        visit("ledger/external_power", s.ledger.externalPower);
     }
     template <class Self, class Visitor>
     static void visitArrays(Self& s, Visitor& visit) {

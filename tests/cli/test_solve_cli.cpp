@@ -68,6 +68,14 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"checkpoint_interval_not_a_number.toml", "'checkpoint_interval' in [run] must be a number",
          5},
         {"min_dt_ratio_not_below_one.toml", "'min_dt_ratio' in [run] must be < 1 (0 = off)", 4},
+        {"wall_zero_normal.toml", "'normal' in [[wall]] must not be zero", 18},
+        {"wall_negative_friction.toml", "'friction' in [[wall]] must be ≥ 0", 18},
+        {"wall_missing_point.toml", "missing key 'point' in [[wall]]", 15},
+        {"wall_unknown_key.toml", "unknown key 'mu' in [[wall]]", 18},
+        {"set_force_and_fixed.toml", "set 'load' has a 'force' and a kinematic condition", 18},
+        {"contact_negative_penalty.toml", "'penalty' in [contact] must be > 0", 16},
+        {"contact_unknown_key.toml", "unknown key 'stiffness' in [contact]", 16},
+        {"gravity_not_three.toml", "'gravity' in [run] must be a list of 3 numbers", 4},
     };
     std::size_t fixtures = 0;
     for (const auto& e : fs::directory_iterator(kSource / "tests/data/bad_cases"))
@@ -113,7 +121,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     // Energy: the ledger balances the boundary work (the driven face) within 1 %.
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
-    ASSERT_EQ(header.size(), 14u);
+    ASSERT_EQ(header.size(), 15u);
     // The documented order (docs/formats.md): clock, energies, total, momentum.
     const std::vector<std::string> expected = {"time",
                                                "step",
@@ -124,6 +132,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
                                                "damage_dissipation",
                                                "hourglass_work",
                                                "viscous_work",
+                                               "contact_energy",
                                                "external_work",
                                                "total_energy",
                                                "momentum_x",
@@ -144,6 +153,50 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     const Snapshot last = readSnapshot(run / "snapshot_000010.h5");
     EXPECT_NEAR(last.time, 3e-5, 1e-15);
     EXPECT_EQ(last.size(), 320);
+}
+
+// A case with the keys of issue #6: the bar thrown at 50 m/s against a wall 0.5 mm away, with
+// friction, under gravity, its far face pushed by a set force. The wall is met, and the history
+// balances: kinetic + internal + … + contact energy − external work stays at its initial value.
+TEST(SolveCli, WallGravityAndSetForceCaseBalancesItsEnergy) {
+    TempDir dir;
+    makeParticles(dir);
+    const fs::path casePath = dir / "wall.toml";
+    {
+        std::ofstream out(casePath);
+        out << "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 1.0e-6\n"
+               "viscosity = [0.2, 0.2]\ngravity = [0.0, -2.0e4, 0.0]\n"
+               "[contact]\npenalty = 4.0\n"
+               "[[material]]\nname = \"steel\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
+               "poisson_ratio = 0.3\n"
+               "[[body]]\ngroup = \"bar\"\nmaterial = \"steel\"\nvelocity = [-50.0, 0.0, 0.0]\n"
+               "[[set]]\nname = \"load\"\nforce = [-2000.0, 0.0, 0.0]\n"
+               "[[wall]]\nname = \"anvil\"\npoint = [-0.0005, 0.0, 0.0]\nnormal = [1.0, 0.0, 0.0]\n"
+               "friction = 0.2\n";
+    }
+    const fs::path run = dir / "run";
+    const auto r = runCommand(kSolve + " " + casePath.string() + " -o " + run.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(run / "history.csv", header);
+    const auto col = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    double contact = 0.0, scale = rows.front()[col("kinetic_energy")], worst = 0.0;
+    for (const auto& row : rows) {
+        contact = std::max(contact, row[col("contact_energy")]);
+        scale = std::max(scale, std::abs(row[col("external_work")]));
+    }
+    for (const auto& row : rows)
+        worst =
+            std::max(worst, std::abs(row[col("total_energy")] - rows.front()[col("total_energy")]));
+    EXPECT_GT(contact, 0.0) << "the bar met the wall";
+    EXPECT_LT(worst, 0.01 * scale);
+    // Momentum: the set force and gravity act throughout; y momentum = M g_y t exactly (the
+    // wall's friction acts along y and z only while the bar slides on it: bounded by μ N).
+    EXPECT_LT(rows.back()[col("momentum_y")], 0.0);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/contact_fixtures.hpp"
 #include "support/johnson_cook_materials.hpp"
 
 namespace gsph {
@@ -75,6 +76,48 @@ TEST(ThreadIndependence, PlasticRunsAreBitIdenticalToo) {
     EXPECT_EQ(std::memcmp(&e1.elastic, &e2.elastic, sizeof(double)), 0);
     EXPECT_GT(e1.plasticWork, 0.0);
     EXPECT_GT(e1.damageDissipation, 0.0);
+}
+
+// Contact between two bodies (the current-configuration search, the pair forces and energy),
+// a wall with friction, gravity and a set force: still bit-identical.
+TEST(ThreadIndependence, ContactRunsAreBitIdenticalToo) {
+    const auto run = [](int threads, EnergyReport* energy) {
+        const int saved = omp_get_max_threads();
+        omp_set_num_threads(threads);
+        using testing::Box;
+        SolverOptions options;
+        options.viscosity = {1.0, 1.0};
+        options.hourglass = 0.1;
+        Simulation sim(
+            testing::boxBodies(
+                {Box{Vec3::Zero(), Vec3(0.016, 0.016, 0.010), {16, 16, 10}},
+                 Box{Vec3(0.002, 0.003, 0.010), Vec3(0.012, 0.012, 0.012), {12, 12, 12}}}),
+            {kSteel, kSteel}, options);
+        EXPECT_GT(sim.reference().size(), kParallelThreshold);
+        sim.addWall({"floor", Vec3::Zero(), Vec3(-0.02, 0.0, 1.0), Vec3(0.5, 0.0, 0.0), 0.3});
+        sim.setGravity(Vec3(0.0, 0.0, -9.81));
+        sim.applyForce({"corner", {0, 1, 2}, Vec3(50.0, 0.0, 0.0)});
+        const Reference& ref = sim.reference();
+        std::vector<Vec3> v(static_cast<std::size_t>(ref.size()), Vec3::Zero());
+        for (std::size_t a = 0; a < v.size(); ++a)
+            if (ref.body[a] == 1) v[a] = Vec3(3.0, 0.0, -60.0);
+        sim.setVelocities(v);
+        for (int i = 0; i < 40; ++i) sim.step();
+        EXPECT_GT(sim.integrator().contact().pairsInContact(), 0);
+        *energy = sim.energy();
+        omp_set_num_threads(saved);
+        return sim.state();
+    };
+    EnergyReport e1, e2;
+    const State s1 = run(1, &e1);
+    const State s2 = run(2, &e2);
+    EXPECT_TRUE(bitIdentical(s1.x, s2.x));
+    EXPECT_TRUE(bitIdentical(s1.v, s2.v));
+    EXPECT_TRUE(bitIdentical(s1.cauchy, s2.cauchy));
+    EXPECT_EQ(std::memcmp(&s1.time, &s2.time, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
+    EXPECT_GT(e1.contactEnergy, 0.0);
+    EXPECT_NE(e1.externalWork, 0.0);
 }
 
 }  // namespace

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+#include "contact/penalty_contact.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "spaces/metric.hpp"
+
+namespace gsph {
+
+std::vector<double> contactStiffness(const Reference& ref, const std::vector<double>& pWaveSpeed2,
+                                     double penalty) {
+    if (!(penalty > 0.0)) throw InputError("contact penalty factor must be > 0");
+    std::vector<double> k(static_cast<std::size_t>(ref.size()));
+    for (std::size_t a = 0; a < k.size(); ++a)
+        k[a] = penalty * ref.mass[a] * pWaveSpeed2[a] / (ref.spacing[a] * ref.spacing[a]);
+    return k;
+}
+
+ContactShapes contactShapes(const Reference& ref, double distance) {
+    if (!(distance > 0.0)) throw InputError("contact distance factor must be > 0");
+    const auto n = static_cast<std::size_t>(ref.size());
+    ContactShapes shapes;
+    shapes.S.resize(n);
+    shapes.largestRadius.resize(n);
+    parallelFor(ref.size(), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        const Mat3 M = particleMetric(ref, a).M;
+        const double half =
+            0.5 * distance * ref.spaces[static_cast<std::size_t>(ref.space[ia])].dtheta;
+        // 2-D: M's zz entry is the out-of-plane identity; n never has a z part, so S_zz only
+        // has to be finite, and the largest semi-axis is the in-plane one.
+        const double largest =
+            ref.dim.value == 3
+                ? Eigen::JacobiSVD<Mat3>(M).singularValues()[0]
+                : Eigen::JacobiSVD<Eigen::Matrix2d>(M.topLeftCorner<2, 2>()).singularValues()[0];
+        shapes.S[ia] = (half * M).inverse();
+        shapes.largestRadius[ia] = half * largest;
+    });
+    return shapes;
+}
+
+PenaltyContact::PenaltyContact(const Reference& ref, std::vector<double> stiffness,
+                               ContactShapes shapes, const ContactOptions& options)
+    : ref_(&ref), shapes_(std::move(shapes)), stiffness_(std::move(stiffness)) {
+    const auto n = static_cast<std::size_t>(ref.size());
+    const bool severalBodies = n > 0 && std::any_of(ref.body.begin(), ref.body.end(),
+                                                    [&](Index b) { return b != ref.body.front(); });
+    active_ = options.betweenBodies && severalBodies;
+    if (!active_) return;
+    const double largest =
+        *std::max_element(shapes_.largestRadius.begin(), shapes_.largestRadius.end());
+    // Cells at least as wide as the largest contact distance: every pair in contact lies in
+    // neighbouring cells.
+    cellSize_ = 2.0 * largest;
+    // Buckets: a power of two ≥ 2n keeps the expected load of a bucket below one cell's.
+    std::size_t buckets = 1;
+    while (buckets < 2 * n) buckets *= 2;
+    for (Index a = 0; a < ref.size();) {
+        Index end = a;
+        while (end < ref.size() &&
+               ref.body[static_cast<std::size_t>(end)] == ref.body[static_cast<std::size_t>(a)])
+            ++end;
+        ranges_.emplace_back(a, end);
+        a = end;
+    }
+    boxLow_.resize(ranges_.size());
+    boxHigh_.resize(ranges_.size());
+    candidate_.resize(n);
+    cell_.resize(n);
+    bucket_.resize(n);
+    bucketStart_.resize(buckets + 2);  // the last bucket holds the particles out of reach
+    sorted_.resize(n);
+    energy_.resize(n);
+    pairCount_.resize(n);
+}
+
+std::size_t PenaltyContact::bucketOf(const Cell& c) const {
+    // Spatial hash of the cell's integer coordinates (large odd multipliers, Teschner et al.
+    // 2003); collisions only add candidates, which the cell check below rejects.
+    const auto h = static_cast<std::uint64_t>(c[0]) * 73856093ULL ^
+                   static_cast<std::uint64_t>(c[1]) * 19349663ULL ^
+                   static_cast<std::uint64_t>(c[2]) * 83492791ULL;
+    return static_cast<std::size_t>(h & (bucketStart_.size() - 3));
+}
+
+// Which particles can touch another body at all: those inside another body's bounding box
+// grown by the largest contact distance (a pair in contact lies within that reach of each
+// other, so both ends pass). Keeps the search to the contact zone (the interior of a plate far
+// from the projectile costs a box test, not 27 cells).
+void PenaltyContact::markCandidates(const std::vector<Vec3>& x) {
+    const Reference& ref = *ref_;
+    const Vec3 big = Vec3::Constant(std::numeric_limits<double>::infinity());
+    for (std::size_t b = 0; b < ranges_.size(); ++b) {
+        Vec3 lo = big, hi = -big;
+        for (Index a = ranges_[b].first; a < ranges_[b].second; ++a) {
+            const Vec3& xa = x[static_cast<std::size_t>(a)];
+            if (!xa.allFinite()) continue;
+            lo = lo.cwiseMin(xa);
+            hi = hi.cwiseMax(xa);
+        }
+        boxLow_[b] = lo.array() - cellSize_;
+        boxHigh_[b] = hi.array() + cellSize_;
+    }
+    parallelFor(ref.size(), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        std::uint8_t near = 0;
+        for (std::size_t b = 0; b < ranges_.size() && !near; ++b) {
+            if (a >= ranges_[b].first && a < ranges_[b].second) continue;
+            near = (x[ia].array() >= boxLow_[b].array()).all() &&
+                   (x[ia].array() <= boxHigh_[b].array()).all();
+        }
+        candidate_[ia] = near;
+    });
+}
+
+// Counting sort of the candidates by bucket (sequential: O(n) and a fixed order).
+void PenaltyContact::build(const std::vector<Vec3>& x) {
+    markCandidates(x);
+    const std::size_t n = x.size(), nowhere = bucketStart_.size() - 2;
+    std::fill(bucketStart_.begin(), bucketStart_.end(), 0);
+    for (std::size_t a = 0; a < n; ++a) {
+        if (!candidate_[a]) {
+            bucket_[a] = static_cast<std::uint32_t>(nowhere);
+        } else {
+            for (int d = 0; d < 3; ++d)
+                cell_[a][static_cast<std::size_t>(d)] =
+                    static_cast<std::int64_t>(std::floor(x[a][d] / cellSize_));
+            bucket_[a] = static_cast<std::uint32_t>(bucketOf(cell_[a]));
+        }
+        ++bucketStart_[bucket_[a] + 1];
+    }
+    for (std::size_t b = 1; b < bucketStart_.size(); ++b) bucketStart_[b] += bucketStart_[b - 1];
+    for (std::size_t a = 0; a < n; ++a)
+        sorted_[static_cast<std::size_t>(bucketStart_[bucket_[a]]++)] = static_cast<Index>(a);
+    // The fill advanced each start to the next bucket's start: shift back.
+    for (std::size_t b = bucketStart_.size() - 1; b > 0; --b) bucketStart_[b] = bucketStart_[b - 1];
+    bucketStart_[0] = 0;
+}
+
+double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
+                                 std::vector<double>& frequency2) {
+    pairs_ = 0;
+    if (!active_) return 0.0;
+    build(x);
+    const Reference& ref = *ref_;
+    const ContactShapes& shape = shapes_;
+    const int zReach = ref.dim.value == 2 ? 0 : 1;
+    parallelFor(ref.size(), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        energy_[ia] = 0.0;
+        pairCount_[ia] = 0;
+        if (!candidate_[ia]) return;
+        const Index body = ref.body[ia];
+        const double ka = stiffness_[ia], ma = ref.mass[ia];
+        Vec3 f = Vec3::Zero();
+        double w2 = 0.0, u = 0.0;
+        int count = 0;
+        for (int dz = -zReach; dz <= zReach; ++dz)
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const Cell c = {cell_[ia][0] + dx, cell_[ia][1] + dy, cell_[ia][2] + dz};
+                    const std::size_t bucket = bucketOf(c);
+                    for (Index j = bucketStart_[bucket]; j < bucketStart_[bucket + 1]; ++j) {
+                        const auto ib =
+                            static_cast<std::size_t>(sorted_[static_cast<std::size_t>(j)]);
+                        if (ref.body[ib] == body || cell_[ib] != c) continue;
+                        const Vec3 d = x[ia] - x[ib];
+                        const double r2 = d.squaredNorm();
+                        const double reach = shape.largestRadius[ia] + shape.largestRadius[ib];
+                        if (!(r2 < reach * reach) || r2 == 0.0) continue;
+                        const double r = std::sqrt(r2);
+                        const Vec3 n = d / r;
+                        const Vec3 ua = shape.S[ia] * n, ub = shape.S[ib] * n;
+                        const double na = ua.norm(), nb = ub.norm();
+                        const double gap = (1.0 / na + 1.0 / nb) - r;  // d_ab(n) − r
+                        if (!(gap > 0.0)) continue;
+                        // h = −∂d_ab/∂n: the tangential part turns the force towards the
+                        // ellipsoids' normals, so that f = −∂U/∂x_a exactly.
+                        const Vec3 h = shape.S[ia].transpose() * ua / (na * na * na) +
+                                       shape.S[ib].transpose() * ub / (nb * nb * nb);
+                        const double kb = stiffness_[ib];
+                        const double kab = ka * kb / (ka + kb);        // springs in series
+                        const Vec3 grad = n + (h - n.dot(h) * n) / r;  // −∂gap/∂x_a
+                        f += (kab * gap) * grad;
+                        u += 0.25 * kab * gap * gap;  // half of the pair's ½ k gap²
+                        // The spring's stiffness along −∂gap/∂x_a is k |∂gap/∂x_a|² (> k where
+                        // the ellipsoids meet obliquely).
+                        w2 += kab * grad.squaredNorm() *
+                              (1.0 / ma + 1.0 / std::sqrt(ma * ref.mass[ib]));
+                        ++count;
+                    }
+                }
+        force[ia] += f;
+        frequency2[ia] += w2;
+        energy_[ia] = u;
+        pairCount_[ia] = count;
+    });
+    long counted = 0;
+    for (std::int32_t c : pairCount_) counted += c;
+    pairs_ = counted / 2;
+    return deterministicSum(
+        ref.size(), 0.0, [&](Index a) { return energy_[static_cast<std::size_t>(a)]; }, partial_);
+}
+
+}  // namespace gsph

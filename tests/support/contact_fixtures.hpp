@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// References of several bodies for the contact tests (issue #6): boxes laid on their own
+// lattices, one body and one space each, concatenated in body order (Reference invariant);
+// the Simulation builds pairs and geometry.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "contact/penalty_contact.hpp"
+#include "spaces/analytic_maps.hpp"
+
+namespace gsph::testing {
+
+struct Box {
+    Vec3 origin = Vec3::Zero();
+    Vec3 size = Vec3::Ones();
+    std::array<int, 3> cells = {1, 1, 1};
+    double density = 7800.0;
+};
+
+/// One body per box (body id = position in `boxes`), each its own lattice space.
+inline Reference boxBodies(const std::vector<Box>& boxes, double kappa = 1.2, int dim = 3) {
+    Reference out;
+    for (std::size_t b = 0; b < boxes.size(); ++b) {
+        const Box& box = boxes[b];
+        const Reference r = latticeReference(gradedBoxMap(box.size, {}, box.origin), dim, box.cells,
+                                             box.density, kappa, static_cast<Index>(b));
+        if (b == 0) {
+            out = r;
+            continue;
+        }
+        const auto space = static_cast<Index>(out.spaces.size());
+        out.spaces.push_back(r.spaces[0]);
+        for (std::size_t p = 0; p < r.X.size(); ++p) {
+            out.X.push_back(r.X[p]);
+            out.theta.push_back(r.theta[p]);
+            out.density.push_back(r.density[p]);
+            out.volume.push_back(r.volume[p]);
+            out.body.push_back(r.body[p]);
+            out.space.push_back(space);
+        }
+    }
+    return out;
+}
+
+/// Smallest |x_a − x_b| / d_ab(n) over pairs of different bodies (d_ab(n) = ρ_a(n) + ρ_b(n),
+/// the contact distance of contact/penalty_contact.hpp along the pair), by brute force:
+/// independent of the contact search.
+inline double smallestContactRatio(const Reference& ref, const std::vector<Vec3>& x,
+                                   double distance = 1.0) {
+    const ContactShapes shapes = contactShapes(ref, distance);
+    double smallest = std::numeric_limits<double>::infinity();
+    for (std::size_t a = 0; a < x.size(); ++a)
+        for (std::size_t b = a + 1; b < x.size(); ++b) {
+            if (ref.body[a] == ref.body[b]) continue;
+            const Vec3 n = (x[a] - x[b]).normalized();
+            const double d = shapes.radius(a, n) + shapes.radius(b, n);
+            smallest = std::min(smallest, (x[a] - x[b]).norm() / d);
+        }
+    return smallest;
+}
+
+}  // namespace gsph::testing
