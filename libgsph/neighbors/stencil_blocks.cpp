@@ -32,7 +32,7 @@ bool sameStencil(const PairList& P, Index a, Index b) {
 }
 
 // Splits [begin, end) into ⌈len/kMaxBlock⌉ blocks of near-equal length, so that a stencil run
-// never leaves a remainder shorter than kMinStencilRun (the strips need ≥ kLanes particles).
+// never leaves a remainder shorter than kMinStencilRun (the strips need ≥ kMaxLanes particles).
 void appendBlocks(std::vector<ParticleBlock>& blocks, Index begin, Index end, Index stencil) {
     const Index len = end - begin;
     if (len <= 0) return;
