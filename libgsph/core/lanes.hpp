@@ -72,6 +72,26 @@ template <class L>
     std::memcpy(p, &v, sizeof v);
 }
 
+/// The lanes at p, p + stride, p + 2 stride, ... (a strip across rows).
+template <class L>
+[[gnu::always_inline]] inline L gatherLanes(const double* p, long stride) {
+    L v;
+    for (int j = 0; j < kLanesOf<L>; ++j) v[j] = p[j * stride];
+    return v;
+}
+
+/// Reads a strip's lanes: consecutive (Strided = false) or `stride` apart.
+template <class L, bool Strided>
+struct StripLoad {
+    long stride = 1;
+    [[gnu::always_inline]] L operator()(const double* p) const {
+        if constexpr (Strided)
+            return gatherLanes<L>(p, stride);
+        else
+            return loadLanes<L>(p);
+    }
+};
+
 /// q where s < 0, else 0 (lane by lane): a select, not a branch, so that it vectorises.
 [[gnu::always_inline]] inline double whereNegative(double s, double q) {
     return s < 0.0 ? q : 0.0;

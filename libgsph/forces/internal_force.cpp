@@ -44,12 +44,12 @@ struct BlockSums {
     double fh[3][kMaxBlock];     // Σ hourglass pair forces
 };
 
-// Σ_b K_b w_cb for the strip of particles from a (block offset i; strip type L,
-// core/lanes.hpp). On a symmetric stencil the mirrored entries pair up:
-// Σ_{k ≥ m/2} (K_{c+δk} − K_{c−δk}) w_k.
-template <class L>
-[[gnu::always_inline]] inline void stressStrip(const ForceView& in, const Stencil& st, Index a,
-                                               Index i, BlockSums& s) {
+// Σ_b K_b w_cb for the strip of particles from a (block offset i; strip type L, read through
+// `load`: consecutive or strided, core/lanes.hpp). On a symmetric stencil the mirrored entries pair
+// up: Σ_{k ≥ m/2} (K_{c+δk} − K_{c−δk}) w_k.
+template <class L, class Load>
+[[gnu::always_inline]] inline void stressStrip(const ForceView& in, const Stencil& st,
+                                               const Load& load, Index a, Index i, BlockSums& s) {
     std::array<const double*, 9> K;
     for (std::size_t j = 0; j < 9; ++j) K[j] = in.K[j] + a;
     L acc[3] = {};
@@ -57,9 +57,8 @@ template <class L>
     for (Index k = st.symmetric ? m / 2 : 0; k < m; ++k) {
         const Index d = st.delta[static_cast<std::size_t>(k)];
         const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
-        const auto Kb = [&](std::size_t j) {
-            return st.symmetric ? L(loadLanes<L>(K[j] + d) - loadLanes<L>(K[j] - d))
-                                : loadLanes<L>(K[j] + d);
+        const auto Kb = [&](std::size_t j) __attribute__((always_inline)) {
+            return st.symmetric ? L(load(K[j] + d) - load(K[j] - d)) : load(K[j] + d);
         };
         for (std::size_t r = 0; r < 3; ++r)
             acc[r] += Kb(3 * r) * w[0] + Kb(3 * r + 1) * w[1] + Kb(3 * r + 2) * w[2];
@@ -72,45 +71,40 @@ template <class L>
 // pair means of h, c, ρ), and the hourglass pair forces (forces/hourglass.hpp) with
 // X_cb = X_c − X_b and x_cb = x_c − x_b: both signs flip against X_bc, x_bc, so ē·x keeps its
 // value and the force is +κ x_cb.
-template <bool Viscous, bool Hourglass, class L>
-[[gnu::always_inline]] inline void pairStrip(const ForceView& in, const Stencil& st, Index a,
-                                             Index i, BlockSums& s) {
+template <bool Viscous, bool Hourglass, class L, class Load>
+[[gnu::always_inline]] inline void pairStrip(const ForceView& in, const Stencil& st,
+                                             const Load& load, Index a, Index i, BlockSums& s) {
     L sumQW[3] = {}, fN[3] = {}, fh[3] = {};
     for (Index k = 0; k < st.size(); ++k) {
         const Index b = a + st.delta[static_cast<std::size_t>(k)];
         L y[3];
-        for (std::size_t r = 0; r < 3; ++r)
-            y[r] = loadLanes<L>(in.x[r] + a) - loadLanes<L>(in.x[r] + b);
+        for (std::size_t r = 0; r < 3; ++r) y[r] = load(in.x[r] + a) - load(in.x[r] + b);
         const L x2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
         if constexpr (Viscous) {
             L vx{};
             for (std::size_t r = 0; r < 3; ++r)
-                vx += (loadLanes<L>(in.v[r] + a) - loadLanes<L>(in.v[r] + b)) * y[r];
-            const L q = viscousPairPressure<L>(
-                in.viscosity, vx, x2, 0.5 * (loadLanes<L>(in.h + a) + loadLanes<L>(in.h + b)),
-                0.5 * (loadLanes<L>(in.c + a) + loadLanes<L>(in.c + b)),
-                0.5 * (loadLanes<L>(in.rho + a) + loadLanes<L>(in.rho + b)));
+                vx += (load(in.v[r] + a) - load(in.v[r] + b)) * y[r];
+            const L q = viscousPairPressure<L>(in.viscosity, vx, x2,
+                                               0.5 * (load(in.h + a) + load(in.h + b)),
+                                               0.5 * (load(in.c + a) + load(in.c + b)),
+                                               0.5 * (load(in.rho + a) + load(in.rho + b)));
             const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
             for (std::size_t r = 0; r < 3; ++r) {
                 sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
-                fN[r] += q * (loadLanes<L>(in.N[3 * r] + b) * w[0] +
-                              loadLanes<L>(in.N[3 * r + 1] + b) * w[1] +
-                              loadLanes<L>(in.N[3 * r + 2] + b) * w[2]);
+                fN[r] += q * (load(in.N[3 * r] + b) * w[0] + load(in.N[3 * r + 1] + b) * w[1] +
+                              load(in.N[3 * r + 2] + b) * w[2]);
             }
         }
         if constexpr (Hourglass) {
             L Y[3];
-            for (std::size_t r = 0; r < 3; ++r)
-                Y[r] = loadLanes<L>(in.X[r] + a) - loadLanes<L>(in.X[r] + b);
+            for (std::size_t r = 0; r < 3; ++r) Y[r] = load(in.X[r] + a) - load(in.X[r] + b);
             L predicted{};
             for (std::size_t r = 0; r < 3; ++r)
                 for (std::size_t c = 0; c < 3; ++c)
                     predicted +=
-                        y[r] *
-                        (loadLanes<L>(in.F[3 * r + c] + a) + loadLanes<L>(in.F[3 * r + c] + b)) *
-                        Y[c];
-            const L pairWeight = 0.5 * (loadLanes<L>(in.V + a) + loadLanes<L>(in.V + b)) *
-                                 st.W[static_cast<std::size_t>(k)];
+                        y[r] * (load(in.F[3 * r + c] + a) + load(in.F[3 * r + c] + b)) * Y[c];
+            const L pairWeight =
+                0.5 * (load(in.V + a) + load(in.V + b)) * st.W[static_cast<std::size_t>(k)];
             const L kappa =
                 hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, x2,
                                             Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], pairWeight);
@@ -142,27 +136,41 @@ void finishParticle(const StressFactors& sf, Index c, const Vec3& fStress, const
     force[ic] = f;
 }
 
-// A stencil block strip by strip (strip type L); the last strip of a block whose length is not
-// a multiple of the width overlaps the one before and recomputes (identically) a few particles.
+// The strips of a block (functions, not lambdas: a lambda is not always inlined into the wide
+// target).
+template <bool Viscous, bool Hourglass, class L, class Load>
+[[gnu::always_inline]] inline void blockStrips(const ForceView& in, const Stencil& st,
+                                               const Load& load, const ParticleBlock& block,
+                                               BlockSums& s) {
+    constexpr Index width = kLanesOf<L>;
+    const Index len = block.size();
+    for (Index i0 = 0; i0 < len; i0 += width) {
+        const Index i = std::min(i0, len - width);
+        stressStrip<L>(in, st, load, block.particle(i), i, s);
+        if constexpr (Viscous || Hourglass)
+            pairStrip<Viscous, Hourglass, L>(in, st, load, block.particle(i), i, s);
+    }
+}
+
+// A stencil block strip by strip (strip type L; a block with stride > 1 gathers); the last strip of
+// a block whose length is not a multiple of the width overlaps the one before and recomputes
+// (identically) a few particles.
 template <bool Viscous, bool Hourglass, class L>
 [[gnu::always_inline]] inline void stencilBlockForce(const ForceView& in, const StressFactors& sf,
                                                      const Stencil& st, const ParticleBlock& block,
                                                      std::vector<Vec3>& force, ForceParts& parts) {
-    constexpr Index width = kLanesOf<L>;
     BlockSums s{};  // terms that are off stay zero
-    const Index len = block.end - block.begin;
-    for (Index i0 = 0; i0 < len; i0 += width) {
-        const Index i = std::min(i0, len - width);
-        stressStrip<L>(in, st, block.begin + i, i, s);
-        if constexpr (Viscous || Hourglass)
-            pairStrip<Viscous, Hourglass, L>(in, st, block.begin + i, i, s);
-    }
+    const Index len = block.size();
+    if (block.stride == 1)
+        blockStrips<Viscous, Hourglass, L>(in, st, StripLoad<L, false>{}, block, s);
+    else
+        blockStrips<Viscous, Hourglass, L>(in, st, StripLoad<L, true>{block.stride}, block, s);
     leaveLanes<L>();
     for (Index i = 0; i < len; ++i) {
         const auto col = [&](const double(&a)[3][kMaxBlock]) {
             return Vec3(a[0][i], a[1][i], a[2][i]);
         };
-        const Index c = block.begin + i;
+        const Index c = block.particle(i);
         finishParticle<Viscous, Hourglass>(
             sf, c, sf.K[static_cast<std::size_t>(c)] * st.sumGradW + col(s.fK), col(s.sumQW),
             col(s.fN), col(s.fh), force, parts);
@@ -252,8 +260,7 @@ void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& 
                const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
                std::vector<Vec3>& force, ForceParts& parts) {
     const bool wide = wideLanes();
-    const Index work =
-        blocks.blocks.empty() ? 0 : blocks.blocks.back().end - blocks.blocks[0].begin;
+    const Index work = blocks.particles;
     parallelForBlocks(
         static_cast<std::ptrdiff_t>(blocks.blocks.size()), work, [&](std::ptrdiff_t k) {
             const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
@@ -265,8 +272,9 @@ void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& 
                     portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
                 return;
             }
-            for (Index c = block.begin; c < block.end; ++c)
-                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, c, force, parts);
+            for (Index i = 0; i < block.size(); ++i)
+                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, block.particle(i),
+                                                     force, parts);
         });
 }
 

@@ -23,18 +23,21 @@ namespace {
 
 static_assert(kMinStencilRun >= kMaxLanes, "a stencil block holds at least one strip");
 
-// g[3r + c][i + j] = Σ_k f_r(a + j + δ_k) w_k,c − f_r(a + j) Σ_k w_k,c for the strip of
-// particles a + j (strip type L, core/lanes.hpp), with the nine sums in registers. A symmetric
+// g[3r + c][i + j] = Σ_k f_r(a + js + δ_k) w_k,c − f_r(a + js) Σ_k w_k,c for the strip of
+// particles a + js (strip type L, stride s = load.stride; core/lanes.hpp), with the nine sums in
+// registers. A symmetric
 // stencil sums mirrored pairs (f(a + δ) − f(a − δ)) ⊗ w over half the entries; its Σ_k w_k is
 // exactly zero.
-template <class L>
-[[gnu::always_inline]] inline void stripGradient(const Stencil& st, const Vec3Field& f, Index a,
-                                                 Index i, double (&g)[9][kMaxBlock]) {
+template <class L, class Load>
+[[gnu::always_inline]] inline void stripGradient(const Stencil& st, const Load& load,
+                                                 const Vec3Field& f, Index a, Index i,
+                                                 double (&g)[9][kMaxBlock]) {
     const double* f0 = f.component(0) + a;
     const double* f1 = f.component(1) + a;
     const double* f2 = f.component(2) + a;
     L acc[9] = {};
-    const auto add = [&acc](const L& v0, const L& v1, const L& v2, const Vec3& w) {
+    const auto add = [&acc](const L& v0, const L& v1, const L& v2, const Vec3& w)
+        __attribute__((always_inline)) {
         for (int c = 0; c < 3; ++c) {
             acc[c] += v0 * w[c];
             acc[3 + c] += v1 * w[c];
@@ -45,54 +48,65 @@ template <class L>
     if (st.symmetric) {
         for (Index k = m / 2; k < m; ++k) {
             const Index d = st.delta[static_cast<std::size_t>(k)];
-            add(loadLanes<L>(f0 + d) - loadLanes<L>(f0 - d),
-                loadLanes<L>(f1 + d) - loadLanes<L>(f1 - d),
-                loadLanes<L>(f2 + d) - loadLanes<L>(f2 - d), st.gradW[static_cast<std::size_t>(k)]);
+            add(load(f0 + d) - load(f0 - d), load(f1 + d) - load(f1 - d),
+                load(f2 + d) - load(f2 - d), st.gradW[static_cast<std::size_t>(k)]);
         }
     } else {
         for (Index k = 0; k < m; ++k) {
             const Index d = st.delta[static_cast<std::size_t>(k)];
-            add(loadLanes<L>(f0 + d), loadLanes<L>(f1 + d), loadLanes<L>(f2 + d),
-                st.gradW[static_cast<std::size_t>(k)]);
+            add(load(f0 + d), load(f1 + d), load(f2 + d), st.gradW[static_cast<std::size_t>(k)]);
         }
-        add(-loadLanes<L>(f0), -loadLanes<L>(f1), -loadLanes<L>(f2), st.sumGradW);
+        add(-load(f0), -load(f1), -load(f2), st.sumGradW);
     }
     for (int rc = 0; rc < 9; ++rc) storeLanes(g[rc] + i, acc[rc]);
 }
 
-// Strips of kLanesOf<L> particles; the last strip of a block whose length is not a multiple of
-// the width overlaps the one before and recomputes (identically) a few particles.
-template <class L>
-[[gnu::always_inline]] inline void blockGradients(const Stencil& st, Index a0, Index len,
-                                                  const Vec3Field& x, const Vec3Field& v,
-                                                  BlockThetaGradients& g) {
+// Strips of kLanesOf<L> particles (stride 1: consecutive); the last strip of a block whose
+// length is not a multiple of the width overlaps the one before and recomputes (identically) a
+// few particles.
+template <class L, class Load>
+[[gnu::always_inline]] inline void blockStrips(const Stencil& st, const Load& load, Index a0,
+                                               Index len, const Vec3Field& x, const Vec3Field& v,
+                                               BlockThetaGradients& g) {
     constexpr Index width = kLanesOf<L>;
     for (Index i = 0; i < len; i += width) {
         const Index s = std::min(i, len - width);
-        stripGradient<L>(st, x, a0 + s, s, g.x);
-        stripGradient<L>(st, v, a0 + s, s, g.v);
+        stripGradient<L>(st, load, x, a0 + s * load.stride, s, g.x);
+        stripGradient<L>(st, load, v, a0 + s * load.stride, s, g.v);
     }
+}
+
+// (Functions, not lambdas: a lambda is not always inlined into the wide target.)
+template <class L>
+[[gnu::always_inline]] inline void blockGradients(const Stencil& st, Index a0, Index len,
+                                                  Index stride, const Vec3Field& x,
+                                                  const Vec3Field& v, BlockThetaGradients& g) {
+    if (stride == 1)
+        blockStrips<L>(st, StripLoad<L, false>{}, a0, len, x, v, g);
+    else
+        blockStrips<L>(st, StripLoad<L, true>{stride}, a0, len, x, v, g);
     leaveLanes<L>();
 }
 
-void portableBlockGradients(const Stencil& st, Index a0, Index len, const Vec3Field& x,
-                            const Vec3Field& v, BlockThetaGradients& g) {
-    blockGradients<Lanes2>(st, a0, len, x, v, g);
+void portableBlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+                            const Vec3Field& x, const Vec3Field& v, BlockThetaGradients& g) {
+    blockGradients<Lanes2>(st, a0, len, stride, x, v, g);
 }
 
-GSPH_WIDE_TARGET void wideBlockGradients(const Stencil& st, Index a0, Index len, const Vec3Field& x,
-                                         const Vec3Field& v, BlockThetaGradients& g) {
-    blockGradients<Lanes4>(st, a0, len, x, v, g);
+GSPH_WIDE_TARGET void wideBlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+                                         const Vec3Field& x, const Vec3Field& v,
+                                         BlockThetaGradients& g) {
+    blockGradients<Lanes4>(st, a0, len, stride, x, v, g);
 }
 
 }  // namespace
 
-void stencilThetaGradients(const Stencil& st, Index a0, Index len, const Vec3Field& x,
+void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,
                            const Vec3Field& v, BlockThetaGradients& g) {
     if (wideLanes())
-        wideBlockGradients(st, a0, len, x, v, g);
+        wideBlockGradients(st, block.begin, block.size(), block.stride, x, v, g);
     else
-        portableBlockGradients(st, a0, len, x, v, g);
+        portableBlockGradients(st, block.begin, block.size(), block.stride, x, v, g);
 }
 
 }  // namespace gsph
