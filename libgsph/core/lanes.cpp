@@ -1,31 +1,33 @@
 // SPDX-License-Identifier: MIT
 #include "core/lanes.hpp"
 
+#include <algorithm>
+
 namespace gsph {
 namespace {
 
-bool processorHasWideLanes() {
+int processorLaneWidth() {
 #if defined(__x86_64__) || defined(__i386__)
-    return __builtin_cpu_supports("avx2") != 0;
-#else
-    return false;
+    if (__builtin_cpu_supports("avx512f")) return 8;
+    if (__builtin_cpu_supports("avx2")) return 4;
 #endif
+    return 2;
 }
 
-bool& portableLanesForced() {
-    static bool forced = false;
-    return forced;
+int& laneLimit() {
+    static int limit = 8;
+    return limit;
 }
 
 }  // namespace
 
-bool wideLanes() {
-    static const bool available = processorHasWideLanes();
-    return available && !portableLanesForced();
+int laneWidth() {
+    static const int available = processorLaneWidth();
+    return std::min(available, laneLimit());
 }
 
-void usePortableLanes(bool portable) {
-    portableLanesForced() = portable;
+void limitLanes(int width) {
+    laneLimit() = width;
 }
 
 }  // namespace gsph

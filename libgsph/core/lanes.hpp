@@ -3,14 +3,15 @@
 //
 // The stencil kernels (kinematics/deformation_gradient.cpp, forces/internal_force.cpp) run a
 // strip of particles through a whole stencil with the per-particle sums held in registers. A
-// strip is a GCC vector of doubles: Lanes2 (SSE2, every x86-64) or Lanes4 (AVX2). The kernels
-// are templates on the strip type, compiled twice: as they are, and inside a function with
-// GSPH_WIDE_TARGET, which the library calls when the processor has AVX2 (wideLanes()). So the
-// portable build uses the wide strips where the machine has them, without -march=native.
-// Each lane does the same operations in the same order whatever the width, and the wide target
-// does not enable FMA contraction, so both widths give bit-identical results. Pair formulas
-// written as templates on the scalar type (double, Lanes2 or Lanes4) serve the strip kernels
-// and the one-pair-at-a-time CSR path alike.
+// strip is a GCC vector of doubles: Lanes2 (SSE2, every x86-64), Lanes4 (AVX2) or Lanes8
+// (AVX-512F). The kernels are templates on the strip type, compiled once per width, the wide
+// ones inside functions with GSPH_AVX2_TARGET / GSPH_AVX512_TARGET, which the library calls when
+// the processor has that instruction set (laneWidth()). So the portable build uses the wide
+// strips where the machine has them, without -march=native. Each lane does the same operations
+// in the same order whatever the width, and the library is built with -ffp-contract=off (no
+// fused multiply-add where a target offers it), so every width gives bit-identical results.
+// Pair formulas written as templates on the scalar type (double or a strip type) serve the
+// strip kernels and the one-pair-at-a-time CSR path alike.
 #pragma once
 
 #include <cstring>
@@ -24,30 +25,31 @@ namespace gsph {
 
 typedef double Lanes2 __attribute__((vector_size(16)));
 typedef double Lanes4 __attribute__((vector_size(32)));
+typedef double Lanes8 __attribute__((vector_size(64)));
 
 /// Particles per strip of strip type L.
 template <class L>
 inline constexpr int kLanesOf = static_cast<int>(sizeof(L) / sizeof(double));
 
-/// The widest strip: stencil blocks hold at least this many particles.
-inline constexpr int kMaxLanes = kLanesOf<Lanes4>;
-
 #if defined(__x86_64__) || defined(__i386__)
-#define GSPH_WIDE_TARGET [[gnu::target("avx2")]]
+#define GSPH_AVX2_TARGET [[gnu::target("avx2")]]
+#define GSPH_AVX512_TARGET [[gnu::target("avx512f")]]
 #else
-#define GSPH_WIDE_TARGET
+#define GSPH_AVX2_TARGET
+#define GSPH_AVX512_TARGET
 #endif
 
-/// True when the stencil kernels take Lanes4 strips: the processor has AVX2 and
-/// usePortableLanes(true) has not been called. Decided once; cheap to call.
-bool wideLanes();
-/// Forces the Lanes2 kernels (tests and gsph-bench compare both widths); not thread-safe, call
-/// before a run.
-void usePortableLanes(bool portable);
+/// The widest strip the stencil kernels take: 8 with AVX-512F, 4 with AVX2, else 2, at most
+/// the limit of limitLanes(). A block of fewer particles than that takes the next width that
+/// fits (stencil blocks hold at least kMinStencilRun = 4). Decided once; cheap to call.
+int laneWidth();
+/// Caps laneWidth() at `width` (2, 4 or 8; tests and gsph-bench compare the widths); not
+/// thread-safe, call before a run.
+void limitLanes(int width);
 
 /// Call at the end of the strip loops of type L (before scalar code or a return). For Lanes4
-/// this clears the upper halves of the AVX registers, which otherwise slow down the SSE code
-/// that follows (measured: the CSR path 3× slower) and which GCC does not clear around the
+/// and Lanes8 this clears the upper halves of the AVX registers, which otherwise slow down the SSE
+/// code that follows (measured: the CSR path 3× slower) and which GCC does not clear around the
 /// calls and returns of a target function. An asm statement, so that it inlines into any target;
 /// it clobbers every vector register, so no value is kept across it.
 template <class L>

@@ -11,7 +11,7 @@
 namespace gsph {
 namespace {
 
-static_assert(kMinStencilRun >= kMaxLanes, "a stencil block holds at least one strip");
+static_assert(kMinStencilRun >= kLanesOf<Lanes4>, "a stencil block holds a 4-lane strip");
 
 // Raw component pointers of every field the pair terms read: the stencil loops index them
 // directly so that the compiler sees plain contiguous streams.
@@ -184,10 +184,17 @@ void portableBlockForce(const ForceView& in, const StressFactors& sf, const Sten
 }
 
 template <bool Viscous, bool Hourglass>
-GSPH_WIDE_TARGET void wideBlockForce(const ForceView& in, const StressFactors& sf,
+GSPH_AVX2_TARGET void avx2BlockForce(const ForceView& in, const StressFactors& sf,
                                      const Stencil& st, const ParticleBlock& block,
                                      std::vector<Vec3>& force, ForceParts& parts) {
     stencilBlockForce<Viscous, Hourglass, Lanes4>(in, sf, st, block, force, parts);
+}
+
+template <bool Viscous, bool Hourglass>
+GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactors& sf,
+                                         const Stencil& st, const ParticleBlock& block,
+                                         std::vector<Vec3>& force, ForceParts& parts) {
+    stencilBlockForce<Viscous, Hourglass, Lanes8>(in, sf, st, block, force, parts);
 }
 
 // The general path: particle c over its CSR list, the same pair formulas one pair at a time.
@@ -259,15 +266,17 @@ template <bool Viscous, bool Hourglass>
 void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
                const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
                std::vector<Vec3>& force, ForceParts& parts) {
-    const bool wide = wideLanes();
+    const int width = laneWidth();
     const Index work = blocks.particles;
     parallelForBlocks(
         static_cast<std::ptrdiff_t>(blocks.blocks.size()), work, [&](std::ptrdiff_t k) {
             const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
             if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
                 const Stencil& st = blocks.stencils[static_cast<std::size_t>(block.stencil)];
-                if (wide)
-                    wideBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+                if (width >= 8 && block.size() >= 8)
+                    avx512BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+                else if (width >= 4)
+                    avx2BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
                 else
                     portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
                 return;

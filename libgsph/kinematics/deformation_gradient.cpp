@@ -21,7 +21,7 @@ void deformationGradient(const Reference& ref, const std::vector<Vec3>& x, std::
 
 namespace {
 
-static_assert(kMinStencilRun >= kMaxLanes, "a stencil block holds at least one strip");
+static_assert(kMinStencilRun >= kLanesOf<Lanes4>, "a stencil block holds a 4-lane strip");
 
 // g[3r + c][i + j] = Σ_k f_r(a + js + δ_k) w_k,c − f_r(a + js) Σ_k w_k,c for the strip of
 // particles a + js (strip type L, stride s = load.stride; core/lanes.hpp), with the nine sums in
@@ -93,20 +93,30 @@ void portableBlockGradients(const Stencil& st, Index a0, Index len, Index stride
     blockGradients<Lanes2>(st, a0, len, stride, x, v, g);
 }
 
-GSPH_WIDE_TARGET void wideBlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+GSPH_AVX2_TARGET void avx2BlockGradients(const Stencil& st, Index a0, Index len, Index stride,
                                          const Vec3Field& x, const Vec3Field& v,
                                          BlockThetaGradients& g) {
     blockGradients<Lanes4>(st, a0, len, stride, x, v, g);
+}
+
+GSPH_AVX512_TARGET void avx512BlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+                                             const Vec3Field& x, const Vec3Field& v,
+                                             BlockThetaGradients& g) {
+    blockGradients<Lanes8>(st, a0, len, stride, x, v, g);
 }
 
 }  // namespace
 
 void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,
                            const Vec3Field& v, BlockThetaGradients& g) {
-    if (wideLanes())
-        wideBlockGradients(st, block.begin, block.size(), block.stride, x, v, g);
+    const Index len = block.size();
+    const int width = laneWidth();
+    if (width >= 8 && len >= 8)
+        avx512BlockGradients(st, block.begin, len, block.stride, x, v, g);
+    else if (width >= 4)
+        avx2BlockGradients(st, block.begin, len, block.stride, x, v, g);
     else
-        portableBlockGradients(st, block.begin, block.size(), block.stride, x, v, g);
+        portableBlockGradients(st, block.begin, len, block.stride, x, v, g);
 }
 
 }  // namespace gsph

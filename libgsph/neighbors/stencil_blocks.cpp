@@ -33,7 +33,7 @@ bool sameStencil(const PairList& P, Index a, Index b) {
 
 // Splits the run of `count` particles first, first + stride, ... into ⌈count/kMaxBlock⌉ blocks
 // of near-equal length, so that a stencil run never leaves a remainder shorter than
-// kMinStencilRun (the strips need ≥ kMaxLanes particles).
+// kMinStencilRun (the strips need ≥ 4 particles).
 void appendBlocks(std::vector<ParticleBlock>& blocks, Index first, Index count, Index stride,
                   Index stencil) {
     if (count <= 0) return;

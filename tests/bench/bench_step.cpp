@@ -5,7 +5,7 @@
 // particle and the time per phase.
 //
 // Usage:   gsph-bench [--cells N] [--steps S] [--kappa K] [--no-viscosity] [--no-hourglass]
-//                     [--johnson-cook] [--portable-lanes]
+//                     [--johnson-cook] [--lanes W]
 // Sample:  gsph-bench --cells 46 --steps 100      (≈ 1e5 particles)
 //          gsph-bench --cells 100 --steps 20      (1e6 particles)
 // Threads: OMP_NUM_THREADS.
@@ -57,13 +57,15 @@ int main(int argc, char** argv) {
     bool plastic = false;
     app.add_flag("--johnson-cook", plastic,
                  "Johnson–Cook steel with damage (Weldox 460E constants) instead of elastic steel");
-    bool portableLanes = false;
-    app.add_flag("--portable-lanes", portableLanes,
-                 "stencil kernels in SSE2 strips even where the processor has AVX2");
+    int lanes = 8;
+    app.add_option("--lanes", lanes,
+                   "widest strip of the stencil kernels: 2 (SSE2), 4 (AVX2), 8 (AVX-512F; default: "
+                   "the widest the processor has)")
+        ->check(CLI::IsMember({2, 4, 8}));
     CLI11_PARSE(app, argc, argv);
 
     using namespace gsph;
-    usePortableLanes(portableLanes);
+    limitLanes(lanes);
     const long baseline = peakResidentBytes();
     const auto tSetup = std::chrono::steady_clock::now();
     SolverOptions options;
@@ -103,7 +105,7 @@ int main(int argc, char** argv) {
     std::printf("threads              %d\n", threads);
     std::printf("material             %s\n",
                 plastic ? "Johnson–Cook + damage (Weldox 460E)" : "hypo-elastic steel");
-    std::printf("stencil strips       %s\n", wideLanes() ? "4 lanes (AVX2)" : "2 lanes (SSE2)");
+    std::printf("stencil strips       up to %d lanes\n", laneWidth());
     std::printf("viscosity/hourglass  %s/%s\n", noViscosity ? "off" : "on",
                 noHourglass ? "off" : "on");
     std::printf("setup                %.2f s (pairs, metric, first forces)\n", setupSeconds);
