@@ -2,33 +2,106 @@
 // A strip of consecutive particles evaluated together in SIMD lanes (issue #2).
 //
 // The stencil kernels (kinematics/deformation_gradient.cpp, forces/internal_force.cpp) run a
-// strip of kLanes particles through a whole stencil with the per-particle sums held in
-// registers; Lanes is an Eigen array, so the portable build gets SSE2 and a native build
-// whatever Eigen picks. Pair formulas written as templates on the scalar type (double or
-// Lanes) serve the strip kernels and the one-pair-at-a-time CSR path alike.
+// strip of particles through a whole stencil with the per-particle sums held in registers. A
+// strip is a GCC vector of doubles: Lanes2 (SSE2, every x86-64), Lanes4 (AVX2) or Lanes8
+// (AVX-512F). The kernels are templates on the strip type, compiled once per width, the wide
+// ones inside functions with GSPH_AVX2_TARGET / GSPH_AVX512_TARGET, which the library calls when
+// the processor has that instruction set (laneWidth()). So the portable build uses the wide
+// strips where the machine has them, without -march=native. Each lane does the same operations
+// in the same order whatever the width, and the library is built with -ffp-contract=off (no
+// fused multiply-add where a target offers it), so every width gives bit-identical results.
+// Pair formulas written as templates on the scalar type (double or a strip type) serve the
+// strip kernels and the one-pair-at-a-time CSR path alike.
 #pragma once
 
-#include <Eigen/Core>
+#include <cstring>
+#include <type_traits>
+
+// The strip types never cross a function boundary that is not inlined (the kernels are
+// always_inline inside their target function), so the ABI note on AVX vectors does not apply.
+#pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace gsph {
 
-inline constexpr int kLanes = 2;
-using Lanes = Eigen::Array<double, kLanes, 1>;
+typedef double Lanes2 __attribute__((vector_size(16)));
+typedef double Lanes4 __attribute__((vector_size(32)));
+typedef double Lanes8 __attribute__((vector_size(64)));
 
-/// The kLanes values at p, p + 1, ... (unaligned).
-inline Lanes loadLanes(const double* p) {
-    return Eigen::Map<const Lanes>(p);
+/// Particles per strip of strip type L.
+template <class L>
+inline constexpr int kLanesOf = static_cast<int>(sizeof(L) / sizeof(double));
+
+#if defined(__x86_64__) || defined(__i386__)
+#define GSPH_AVX2_TARGET [[gnu::target("avx2")]]
+#define GSPH_AVX512_TARGET [[gnu::target("avx512f")]]
+#else
+#define GSPH_AVX2_TARGET
+#define GSPH_AVX512_TARGET
+#endif
+
+/// The widest strip the stencil kernels take: 8 with AVX-512F, 4 with AVX2, else 2, at most
+/// the limit of limitLanes(). A block of fewer particles than that takes the next width that
+/// fits (stencil blocks hold at least kMinStencilRun = 4). Decided once; cheap to call.
+int laneWidth();
+/// Caps laneWidth() at `width` (2, 4 or 8; tests and gsph-bench compare the widths); not
+/// thread-safe, call before a run.
+void limitLanes(int width);
+
+/// Call at the end of the strip loops of type L (before scalar code or a return). For Lanes4
+/// and Lanes8 this clears the upper halves of the AVX registers, which otherwise slow down the SSE
+/// code that follows (measured: the CSR path 3× slower) and which GCC does not clear around the
+/// calls and returns of a target function. An asm statement, so that it inlines into any target;
+/// it clobbers every vector register, so no value is kept across it.
+template <class L>
+[[gnu::always_inline]] inline void leaveLanes() {
+#if defined(__x86_64__)
+    if constexpr (sizeof(L) > 16)
+        asm volatile("vzeroupper" ::
+                         : "xmm0", "xmm1", "xmm2", "xmm3", "xmm4", "xmm5", "xmm6", "xmm7", "xmm8",
+                           "xmm9", "xmm10", "xmm11", "xmm12", "xmm13", "xmm14", "xmm15");
+#endif
 }
-inline void storeLanes(double* p, const Lanes& v) {
-    Eigen::Map<Lanes>{p} = v;
+
+/// The lanes at p, p + 1, ... (unaligned).
+template <class L>
+[[gnu::always_inline]] inline L loadLanes(const double* p) {
+    L v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
 }
+template <class L>
+[[gnu::always_inline]] inline void storeLanes(double* p, const L& v) {
+    std::memcpy(p, &v, sizeof v);
+}
+
+/// The lanes at p, p + stride, p + 2 stride, ... (a strip across rows).
+template <class L>
+[[gnu::always_inline]] inline L gatherLanes(const double* p, long stride) {
+    L v;
+    for (int j = 0; j < kLanesOf<L>; ++j) v[j] = p[j * stride];
+    return v;
+}
+
+/// Reads a strip's lanes: consecutive (Strided = false) or `stride` apart.
+template <class L, bool Strided>
+struct StripLoad {
+    long stride = 1;
+    [[gnu::always_inline]] L operator()(const double* p) const {
+        if constexpr (Strided)
+            return gatherLanes<L>(p, stride);
+        else
+            return loadLanes<L>(p);
+    }
+};
 
 /// q where s < 0, else 0 (lane by lane): a select, not a branch, so that it vectorises.
 [[gnu::always_inline]] inline double whereNegative(double s, double q) {
     return s < 0.0 ? q : 0.0;
 }
-[[gnu::always_inline]] inline Lanes whereNegative(const Lanes& s, const Lanes& q) {
-    return (s < 0.0).select(q, 0.0);
+template <class L>
+requires(!std::is_arithmetic_v<L>) [[gnu::always_inline]] inline L
+    whereNegative(const L& s, const L& q) {
+    return s < 0.0 ? q : L{};
 }
 
 }  // namespace gsph

@@ -22,7 +22,7 @@ struct ViscosityCoefficients {
 
 /// Pair pressure q_ab = ρ̄² π_ab = ρ̄ (−β1 c̄ φ + β2 φ²) [Pa], 0 for separating pairs.
 /// Takes the scalars vx = v_ab·x_ab and x2 = |x_ab|², and selects instead of branching; T is
-/// double (one pair) or Lanes (a strip of pairs, core/lanes.hpp).
+/// double (one pair) or a strip type (Lanes2, Lanes4: a strip of pairs, core/lanes.hpp).
 template <class T>
 [[gnu::always_inline]] inline T viscousPairPressure(const ViscosityCoefficients& c, const T& vx,
                                                     const T& x2, const T& hab, const T& cbar,

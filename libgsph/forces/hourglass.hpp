@@ -19,7 +19,7 @@ namespace gsph {
 /// Coefficient κ_ab of the hourglass force on a from b, f = −κ_ab x_ab, i.e. k_ab s_ab/|x_ab|
 /// written without a square root: κ_ab = α E w_ab (ē·x_ab)/(|X_ab|² |x_ab|²) with
 /// ē·x_ab = predicted − x2, predicted = ½(F_a + F_b) X_ab · x_ab, x2 = |x_ab|², X2 = |X_ab|²,
-/// pairWeight w_ab = ½ (V_a + V_b) ω W_ab. T is double (one pair) or Lanes (core/lanes.hpp).
+/// pairWeight w_ab = ½ (V_a + V_b) ω W_ab. T is double (one pair) or a strip (core/lanes.hpp).
 template <class T>
 [[gnu::always_inline]] inline T hourglassPairCoefficient(double alphaE, const T& predicted,
                                                          const T& x2, const T& X2,

@@ -11,7 +11,7 @@
 namespace gsph {
 namespace {
 
-static_assert(kMinStencilRun >= kLanes, "a stencil block holds at least one strip");
+static_assert(kMinStencilRun >= kLanesOf<Lanes4>, "a stencil block holds a 4-lane strip");
 
 // Raw component pointers of every field the pair terms read: the stencil loops index them
 // directly so that the compiler sees plain contiguous streams.
@@ -44,20 +44,21 @@ struct BlockSums {
     double fh[3][kMaxBlock];     // Σ hourglass pair forces
 };
 
-// Σ_b K_b w_cb for the strip of kLanes particles from a (block offset i). On a symmetric
-// stencil the mirrored entries pair up: Σ_{k ≥ m/2} (K_{c+δk} − K_{c−δk}) w_k.
-void stressStrip(const ForceView& in, const Stencil& st, Index a, Index i, BlockSums& s) {
+// Σ_b K_b w_cb for the strip of particles from a (block offset i; strip type L, read through
+// `load`: consecutive or strided, core/lanes.hpp). On a symmetric stencil the mirrored entries pair
+// up: Σ_{k ≥ m/2} (K_{c+δk} − K_{c−δk}) w_k.
+template <class L, class Load>
+[[gnu::always_inline]] inline void stressStrip(const ForceView& in, const Stencil& st,
+                                               const Load& load, Index a, Index i, BlockSums& s) {
     std::array<const double*, 9> K;
     for (std::size_t j = 0; j < 9; ++j) K[j] = in.K[j] + a;
-    Lanes acc[3];
-    for (Lanes& l : acc) l.setZero();
+    L acc[3] = {};
     const Index m = st.size();
     for (Index k = st.symmetric ? m / 2 : 0; k < m; ++k) {
         const Index d = st.delta[static_cast<std::size_t>(k)];
         const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
-        const auto Kb = [&](std::size_t j) {
-            return st.symmetric ? Lanes(loadLanes(K[j] + d) - loadLanes(K[j] - d))
-                                : loadLanes(K[j] + d);
+        const auto Kb = [&](std::size_t j) __attribute__((always_inline)) {
+            return st.symmetric ? L(load(K[j] + d) - load(K[j] - d)) : load(K[j] + d);
         };
         for (std::size_t r = 0; r < 3; ++r)
             acc[r] += Kb(3 * r) * w[0] + Kb(3 * r + 1) * w[1] + Kb(3 * r + 2) * w[2];
@@ -65,59 +66,55 @@ void stressStrip(const ForceView& in, const Stencil& st, Index a, Index i, Block
     for (int r = 0; r < 3; ++r) storeLanes(s.fK[r] + i, acc[r]);
 }
 
-// Σ q_cb w_cb and Σ q_cb N_b w_cb (forces/artificial_viscosity.hpp: pair means of h, c, ρ).
-void viscousStrip(const ForceView& in, const Stencil& st, Index a, Index i, BlockSums& s) {
-    Lanes sumQW[3], fN[3];
-    for (int r = 0; r < 3; ++r) sumQW[r].setZero(), fN[r].setZero();
+// The viscous and hourglass pair terms in one sweep over the stencil, so that x_b (which both
+// read) is loaded once per pair: Σ q_cb w_cb and Σ q_cb N_b w_cb (forces/artificial_viscosity.hpp,
+// pair means of h, c, ρ), and the hourglass pair forces (forces/hourglass.hpp) with
+// X_cb = X_c − X_b and x_cb = x_c − x_b: both signs flip against X_bc, x_bc, so ē·x keeps its
+// value and the force is +κ x_cb.
+template <bool Viscous, bool Hourglass, class L, class Load>
+[[gnu::always_inline]] inline void pairStrip(const ForceView& in, const Stencil& st,
+                                             const Load& load, Index a, Index i, BlockSums& s) {
+    L sumQW[3] = {}, fN[3] = {}, fh[3] = {};
     for (Index k = 0; k < st.size(); ++k) {
         const Index b = a + st.delta[static_cast<std::size_t>(k)];
-        const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
-        Lanes vx = Lanes::Zero(), x2 = Lanes::Zero();
-        for (std::size_t r = 0; r < 3; ++r) {
-            const Lanes xcb = loadLanes(in.x[r] + a) - loadLanes(in.x[r] + b);
-            vx += (loadLanes(in.v[r] + a) - loadLanes(in.v[r] + b)) * xcb;
-            x2 += xcb * xcb;
+        L y[3];
+        for (std::size_t r = 0; r < 3; ++r) y[r] = load(in.x[r] + a) - load(in.x[r] + b);
+        const L x2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+        if constexpr (Viscous) {
+            L vx{};
+            for (std::size_t r = 0; r < 3; ++r)
+                vx += (load(in.v[r] + a) - load(in.v[r] + b)) * y[r];
+            const L q = viscousPairPressure<L>(in.viscosity, vx, x2,
+                                               0.5 * (load(in.h + a) + load(in.h + b)),
+                                               0.5 * (load(in.c + a) + load(in.c + b)),
+                                               0.5 * (load(in.rho + a) + load(in.rho + b)));
+            const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
+            for (std::size_t r = 0; r < 3; ++r) {
+                sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
+                fN[r] += q * (load(in.N[3 * r] + b) * w[0] + load(in.N[3 * r + 1] + b) * w[1] +
+                              load(in.N[3 * r + 2] + b) * w[2]);
+            }
         }
-        const Lanes q = viscousPairPressure<Lanes>(
-            in.viscosity, vx, x2, 0.5 * (loadLanes(in.h + a) + loadLanes(in.h + b)),
-            0.5 * (loadLanes(in.c + a) + loadLanes(in.c + b)),
-            0.5 * (loadLanes(in.rho + a) + loadLanes(in.rho + b)));
-        for (std::size_t r = 0; r < 3; ++r) {
-            sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
-            fN[r] +=
-                q * (loadLanes(in.N[3 * r] + b) * w[0] + loadLanes(in.N[3 * r + 1] + b) * w[1] +
-                     loadLanes(in.N[3 * r + 2] + b) * w[2]);
+        if constexpr (Hourglass) {
+            L Y[3];
+            for (std::size_t r = 0; r < 3; ++r) Y[r] = load(in.X[r] + a) - load(in.X[r] + b);
+            L predicted{};
+            for (std::size_t r = 0; r < 3; ++r)
+                for (std::size_t c = 0; c < 3; ++c)
+                    predicted +=
+                        y[r] * (load(in.F[3 * r + c] + a) + load(in.F[3 * r + c] + b)) * Y[c];
+            const L pairWeight =
+                0.5 * (load(in.V + a) + load(in.V + b)) * st.W[static_cast<std::size_t>(k)];
+            const L kappa =
+                hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, x2,
+                                            Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], pairWeight);
+            for (int r = 0; r < 3; ++r) fh[r] += kappa * y[r];
         }
     }
-    for (int r = 0; r < 3; ++r)
-        storeLanes(s.sumQW[r] + i, sumQW[r]), storeLanes(s.fN[r] + i, fN[r]);
-}
-
-// Hourglass pair forces (forces/hourglass.hpp) with X_cb = X_c − X_b and x_cb = x_c − x_b:
-// both signs flip against X_bc, x_bc, so ē·x keeps its value and the force is +κ x_cb.
-void hourglassStrip(const ForceView& in, const Stencil& st, Index a, Index i, BlockSums& s) {
-    Lanes fh[3];
-    for (Lanes& l : fh) l.setZero();
-    for (Index k = 0; k < st.size(); ++k) {
-        const Index b = a + st.delta[static_cast<std::size_t>(k)];
-        Lanes Y[3], y[3];
-        for (std::size_t r = 0; r < 3; ++r) {
-            Y[r] = loadLanes(in.X[r] + a) - loadLanes(in.X[r] + b);
-            y[r] = loadLanes(in.x[r] + a) - loadLanes(in.x[r] + b);
-        }
-        Lanes predicted = Lanes::Zero();
-        for (std::size_t r = 0; r < 3; ++r)
-            for (std::size_t c = 0; c < 3; ++c)
-                predicted +=
-                    y[r] * (loadLanes(in.F[3 * r + c] + a) + loadLanes(in.F[3 * r + c] + b)) * Y[c];
-        const Lanes pairWeight =
-            0.5 * (loadLanes(in.V + a) + loadLanes(in.V + b)) * st.W[static_cast<std::size_t>(k)];
-        const Lanes kappa = hourglassPairCoefficient<Lanes>(
-            in.alphaE, 0.5 * predicted, y[0] * y[0] + y[1] * y[1] + y[2] * y[2],
-            Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], pairWeight);
-        for (int r = 0; r < 3; ++r) fh[r] += kappa * y[r];
+    for (int r = 0; r < 3; ++r) {
+        if constexpr (Viscous) storeLanes(s.sumQW[r] + i, sumQW[r]), storeLanes(s.fN[r] + i, fN[r]);
+        if constexpr (Hourglass) storeLanes(s.fh[r] + i, fh[r]);
     }
-    for (int r = 0; r < 3; ++r) storeLanes(s.fh[r] + i, fh[r]);
 }
 
 // The force of particle c from its pair sums: f_c = fStress − (N_c Σqw + Σ q N_b w)
@@ -139,28 +136,65 @@ void finishParticle(const StressFactors& sf, Index c, const Vec3& fStress, const
     force[ic] = f;
 }
 
-// A stencil block strip by strip; the last strip of a block whose length is not a multiple of
-// kLanes overlaps the one before and recomputes (identically) a few particles.
-template <bool Viscous, bool Hourglass>
-void stencilBlockForce(const ForceView& in, const StressFactors& sf, const Stencil& st,
-                       const ParticleBlock& block, std::vector<Vec3>& force, ForceParts& parts) {
-    BlockSums s{};  // terms that are off stay zero
-    const Index len = block.end - block.begin;
-    for (Index i0 = 0; i0 < len; i0 += kLanes) {
-        const Index i = std::min(i0, len - kLanes);
-        stressStrip(in, st, block.begin + i, i, s);
-        if constexpr (Viscous) viscousStrip(in, st, block.begin + i, i, s);
-        if constexpr (Hourglass) hourglassStrip(in, st, block.begin + i, i, s);
+// The strips of a block (functions, not lambdas: a lambda is not always inlined into the wide
+// target).
+template <bool Viscous, bool Hourglass, class L, class Load>
+[[gnu::always_inline]] inline void blockStrips(const ForceView& in, const Stencil& st,
+                                               const Load& load, const ParticleBlock& block,
+                                               BlockSums& s) {
+    constexpr Index width = kLanesOf<L>;
+    const Index len = block.size();
+    for (Index i0 = 0; i0 < len; i0 += width) {
+        const Index i = std::min(i0, len - width);
+        stressStrip<L>(in, st, load, block.particle(i), i, s);
+        if constexpr (Viscous || Hourglass)
+            pairStrip<Viscous, Hourglass, L>(in, st, load, block.particle(i), i, s);
     }
+}
+
+// A stencil block strip by strip (strip type L; a block with stride > 1 gathers); the last strip of
+// a block whose length is not a multiple of the width overlaps the one before and recomputes
+// (identically) a few particles.
+template <bool Viscous, bool Hourglass, class L>
+[[gnu::always_inline]] inline void stencilBlockForce(const ForceView& in, const StressFactors& sf,
+                                                     const Stencil& st, const ParticleBlock& block,
+                                                     std::vector<Vec3>& force, ForceParts& parts) {
+    BlockSums s{};  // terms that are off stay zero
+    const Index len = block.size();
+    if (block.stride == 1)
+        blockStrips<Viscous, Hourglass, L>(in, st, StripLoad<L, false>{}, block, s);
+    else
+        blockStrips<Viscous, Hourglass, L>(in, st, StripLoad<L, true>{block.stride}, block, s);
+    leaveLanes<L>();
     for (Index i = 0; i < len; ++i) {
         const auto col = [&](const double(&a)[3][kMaxBlock]) {
             return Vec3(a[0][i], a[1][i], a[2][i]);
         };
-        const Index c = block.begin + i;
+        const Index c = block.particle(i);
         finishParticle<Viscous, Hourglass>(
             sf, c, sf.K[static_cast<std::size_t>(c)] * st.sumGradW + col(s.fK), col(s.sumQW),
             col(s.fN), col(s.fh), force, parts);
     }
+}
+
+template <bool Viscous, bool Hourglass>
+void portableBlockForce(const ForceView& in, const StressFactors& sf, const Stencil& st,
+                        const ParticleBlock& block, std::vector<Vec3>& force, ForceParts& parts) {
+    stencilBlockForce<Viscous, Hourglass, Lanes2>(in, sf, st, block, force, parts);
+}
+
+template <bool Viscous, bool Hourglass>
+GSPH_AVX2_TARGET void avx2BlockForce(const ForceView& in, const StressFactors& sf,
+                                     const Stencil& st, const ParticleBlock& block,
+                                     std::vector<Vec3>& force, ForceParts& parts) {
+    stencilBlockForce<Viscous, Hourglass, Lanes4>(in, sf, st, block, force, parts);
+}
+
+template <bool Viscous, bool Hourglass>
+GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactors& sf,
+                                         const Stencil& st, const ParticleBlock& block,
+                                         std::vector<Vec3>& force, ForceParts& parts) {
+    stencilBlockForce<Viscous, Hourglass, Lanes8>(in, sf, st, block, force, parts);
 }
 
 // The general path: particle c over its CSR list, the same pair formulas one pair at a time.
@@ -232,19 +266,24 @@ template <bool Viscous, bool Hourglass>
 void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
                const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
                std::vector<Vec3>& force, ForceParts& parts) {
-    const Index work =
-        blocks.blocks.empty() ? 0 : blocks.blocks.back().end - blocks.blocks[0].begin;
+    const int width = laneWidth();
+    const Index work = blocks.particles;
     parallelForBlocks(
         static_cast<std::ptrdiff_t>(blocks.blocks.size()), work, [&](std::ptrdiff_t k) {
             const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
             if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
-                stencilBlockForce<Viscous, Hourglass>(
-                    in, sf, blocks.stencils[static_cast<std::size_t>(block.stencil)], block, force,
-                    parts);
+                const Stencil& st = blocks.stencils[static_cast<std::size_t>(block.stencil)];
+                if (width >= 8 && block.size() >= 8)
+                    avx512BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+                else if (width >= 4)
+                    avx2BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+                else
+                    portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
                 return;
             }
-            for (Index c = block.begin; c < block.end; ++c)
-                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, c, force, parts);
+            for (Index i = 0; i < block.size(); ++i)
+                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, block.particle(i),
+                                                     force, parts);
         });
 }
 

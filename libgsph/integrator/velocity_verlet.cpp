@@ -128,7 +128,8 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
                  const ParticleBlock& block) {
     const BondView bonds = s.bonds.view(s.state);
     if (s.atRest) {
-        for (Index a = block.begin; a < block.end; ++a) {
+        for (Index i = 0; i < block.size(); ++i) {
+            const Index a = block.particle(i);
             const auto ia = static_cast<std::size_t>(a);
             if (s.bonds.detached(a)) {
                 detachParticle(model, s, ia);
@@ -140,12 +141,13 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
         }
     } else if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
         BlockThetaGradients g;
-        stencilThetaGradients(blocks.stencils[static_cast<std::size_t>(block.stencil)], block.begin,
-                              block.end - block.begin, s.work.fields.x, s.work.fields.v, g);
-        for (Index i = 0; i < block.end - block.begin; ++i)
-            advanceParticle(model, s, block.begin + i, g.gradX(i), g.gradV(i));
+        stencilThetaGradients(blocks.stencils[static_cast<std::size_t>(block.stencil)], block,
+                              s.work.fields.x, s.work.fields.v, g);
+        for (Index i = 0; i < block.size(); ++i)
+            advanceParticle(model, s, block.particle(i), g.gradX(i), g.gradV(i));
     } else {
-        for (Index a = block.begin; a < block.end; ++a) {
+        for (Index i = 0; i < block.size(); ++i) {
+            const Index a = block.particle(i);
             if (s.bonds.detached(a)) {
                 detachParticle(model, s, static_cast<std::size_t>(a));
                 continue;

@@ -21,19 +21,23 @@ void deformationGradient(const Reference& ref, const std::vector<Vec3>& x, std::
 
 namespace {
 
-static_assert(kMinStencilRun >= kLanes, "a stencil block holds at least one strip");
+static_assert(kMinStencilRun >= kLanesOf<Lanes4>, "a stencil block holds a 4-lane strip");
 
-// g[3r + c][i + j] = Σ_k f_r(a + j + δ_k) w_k,c − f_r(a + j) Σ_k w_k,c for the strip of kLanes
-// particles a + j, with the nine sums in registers. A symmetric stencil sums mirrored pairs
-// (f(a + δ) − f(a − δ)) ⊗ w over half the entries; its Σ_k w_k is exactly zero.
-void stripGradient(const Stencil& st, const Vec3Field& f, Index a, Index i,
-                   double (&g)[9][kMaxBlock]) {
+// g[3r + c][i + j] = Σ_k f_r(a + js + δ_k) w_k,c − f_r(a + js) Σ_k w_k,c for the strip of
+// particles a + js (strip type L, stride s = load.stride; core/lanes.hpp), with the nine sums in
+// registers. A symmetric
+// stencil sums mirrored pairs (f(a + δ) − f(a − δ)) ⊗ w over half the entries; its Σ_k w_k is
+// exactly zero.
+template <class L, class Load>
+[[gnu::always_inline]] inline void stripGradient(const Stencil& st, const Load& load,
+                                                 const Vec3Field& f, Index a, Index i,
+                                                 double (&g)[9][kMaxBlock]) {
     const double* f0 = f.component(0) + a;
     const double* f1 = f.component(1) + a;
     const double* f2 = f.component(2) + a;
-    Lanes acc[9];
-    for (Lanes& s : acc) s.setZero();
-    const auto add = [&acc](const Lanes& v0, const Lanes& v1, const Lanes& v2, const Vec3& w) {
+    L acc[9] = {};
+    const auto add = [&acc](const L& v0, const L& v1, const L& v2, const Vec3& w)
+        __attribute__((always_inline)) {
         for (int c = 0; c < 3; ++c) {
             acc[c] += v0 * w[c];
             acc[3 + c] += v1 * w[c];
@@ -44,31 +48,75 @@ void stripGradient(const Stencil& st, const Vec3Field& f, Index a, Index i,
     if (st.symmetric) {
         for (Index k = m / 2; k < m; ++k) {
             const Index d = st.delta[static_cast<std::size_t>(k)];
-            add(loadLanes(f0 + d) - loadLanes(f0 - d), loadLanes(f1 + d) - loadLanes(f1 - d),
-                loadLanes(f2 + d) - loadLanes(f2 - d), st.gradW[static_cast<std::size_t>(k)]);
+            add(load(f0 + d) - load(f0 - d), load(f1 + d) - load(f1 - d),
+                load(f2 + d) - load(f2 - d), st.gradW[static_cast<std::size_t>(k)]);
         }
     } else {
         for (Index k = 0; k < m; ++k) {
             const Index d = st.delta[static_cast<std::size_t>(k)];
-            add(loadLanes(f0 + d), loadLanes(f1 + d), loadLanes(f2 + d),
-                st.gradW[static_cast<std::size_t>(k)]);
+            add(load(f0 + d), load(f1 + d), load(f2 + d), st.gradW[static_cast<std::size_t>(k)]);
         }
-        add(-loadLanes(f0), -loadLanes(f1), -loadLanes(f2), st.sumGradW);
+        add(-load(f0), -load(f1), -load(f2), st.sumGradW);
     }
     for (int rc = 0; rc < 9; ++rc) storeLanes(g[rc] + i, acc[rc]);
 }
 
+// Strips of kLanesOf<L> particles (stride 1: consecutive); the last strip of a block whose
+// length is not a multiple of the width overlaps the one before and recomputes (identically) a
+// few particles.
+template <class L, class Load>
+[[gnu::always_inline]] inline void blockStrips(const Stencil& st, const Load& load, Index a0,
+                                               Index len, const Vec3Field& x, const Vec3Field& v,
+                                               BlockThetaGradients& g) {
+    constexpr Index width = kLanesOf<L>;
+    for (Index i = 0; i < len; i += width) {
+        const Index s = std::min(i, len - width);
+        stripGradient<L>(st, load, x, a0 + s * load.stride, s, g.x);
+        stripGradient<L>(st, load, v, a0 + s * load.stride, s, g.v);
+    }
+}
+
+// (Functions, not lambdas: a lambda is not always inlined into the wide target.)
+template <class L>
+[[gnu::always_inline]] inline void blockGradients(const Stencil& st, Index a0, Index len,
+                                                  Index stride, const Vec3Field& x,
+                                                  const Vec3Field& v, BlockThetaGradients& g) {
+    if (stride == 1)
+        blockStrips<L>(st, StripLoad<L, false>{}, a0, len, x, v, g);
+    else
+        blockStrips<L>(st, StripLoad<L, true>{stride}, a0, len, x, v, g);
+    leaveLanes<L>();
+}
+
+void portableBlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+                            const Vec3Field& x, const Vec3Field& v, BlockThetaGradients& g) {
+    blockGradients<Lanes2>(st, a0, len, stride, x, v, g);
+}
+
+GSPH_AVX2_TARGET void avx2BlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+                                         const Vec3Field& x, const Vec3Field& v,
+                                         BlockThetaGradients& g) {
+    blockGradients<Lanes4>(st, a0, len, stride, x, v, g);
+}
+
+GSPH_AVX512_TARGET void avx512BlockGradients(const Stencil& st, Index a0, Index len, Index stride,
+                                             const Vec3Field& x, const Vec3Field& v,
+                                             BlockThetaGradients& g) {
+    blockGradients<Lanes8>(st, a0, len, stride, x, v, g);
+}
+
 }  // namespace
 
-// Strips of kLanes particles; the last strip of a block whose length is not a multiple of
-// kLanes overlaps the one before and recomputes (identically) a few particles.
-void stencilThetaGradients(const Stencil& st, Index a0, Index len, const Vec3Field& x,
+void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,
                            const Vec3Field& v, BlockThetaGradients& g) {
-    for (Index i = 0; i < len; i += kLanes) {
-        const Index s = std::min(i, len - kLanes);
-        stripGradient(st, x, a0 + s, s, g.x);
-        stripGradient(st, v, a0 + s, s, g.v);
-    }
+    const Index len = block.size();
+    const int width = laneWidth();
+    if (width >= 8 && len >= 8)
+        avx512BlockGradients(st, block.begin, len, block.stride, x, v, g);
+    else if (width >= 4)
+        avx2BlockGradients(st, block.begin, len, block.stride, x, v, g);
+    else
+        portableBlockGradients(st, block.begin, len, block.stride, x, v, g);
 }
 
 }  // namespace gsph

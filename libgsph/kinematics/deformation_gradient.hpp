@@ -63,9 +63,9 @@ struct BlockThetaGradients {
     }
 };
 
-/// thetaGradients for the particles [a0, a0 + len) of a stencil block
-/// (kMinStencilRun ≤ len ≤ kMaxBlock): b = a + st.delta[k], w_ab = st.gradW[k].
-void stencilThetaGradients(const Stencil& st, Index a0, Index len, const Vec3Field& x,
+/// thetaGradients for the particles of a stencil block (kMinStencilRun ≤ size ≤ kMaxBlock;
+/// row i of g is block.particle(i)): b = a + st.delta[k], w_ab = st.gradW[k].
+void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,
                            const Vec3Field& v, BlockThetaGradients& g);
 
 /// F for every particle from positions x (used by tests and diagnostics; the integrator fuses

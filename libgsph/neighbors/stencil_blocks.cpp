@@ -31,14 +31,17 @@ bool sameStencil(const PairList& P, Index a, Index b) {
     return true;
 }
 
-// Splits [begin, end) into ⌈len/kMaxBlock⌉ blocks of near-equal length, so that a stencil run
-// never leaves a remainder shorter than kMinStencilRun (the strips need ≥ kLanes particles).
-void appendBlocks(std::vector<ParticleBlock>& blocks, Index begin, Index end, Index stencil) {
-    const Index len = end - begin;
-    if (len <= 0) return;
-    const Index count = (len + kMaxBlock - 1) / kMaxBlock;
-    for (Index i = 0; i < count; ++i)
-        blocks.push_back({begin + len * i / count, begin + len * (i + 1) / count, stencil});
+// Splits the run of `count` particles first, first + stride, ... into ⌈count/kMaxBlock⌉ blocks
+// of near-equal length, so that a stencil run never leaves a remainder shorter than
+// kMinStencilRun (the strips need ≥ 4 particles).
+void appendBlocks(std::vector<ParticleBlock>& blocks, Index first, Index count, Index stride,
+                  Index stencil) {
+    if (count <= 0) return;
+    const Index parts = (count + kMaxBlock - 1) / kMaxBlock;
+    for (Index i = 0; i < parts; ++i) {
+        const Index p0 = count * i / parts, p1 = count * (i + 1) / parts;
+        blocks.push_back({first + p0 * stride, first + (p1 - 1) * stride + 1, stencil, stride});
+    }
 }
 
 Stencil makeStencil(const PairList& P, Index a) {
@@ -77,27 +80,58 @@ StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end,
         return csrOnly.empty() || csrOnly[static_cast<std::size_t>(a)] == 0;
     };
     StencilBlocks out;
+    out.particles = std::max<Index>(end - begin, 0);
     std::map<std::vector<Index>, Index> known;  // relative list → stencil id
-    Index csrBegin = begin;                     // start of the pending CSR stretch
+    const auto stencilOf = [&](Index a) {
+        const auto [it, inserted] =
+            known.try_emplace(relativeList(pairs, a), static_cast<Index>(out.stencils.size()));
+        if (inserted) out.stencils.push_back(makeStencil(pairs, a));
+        return it->second;
+    };
+    std::vector<std::uint8_t> taken(static_cast<std::size_t>(out.particles), 0);
+    const auto free = [&](Index a) {
+        return a < end && taken[static_cast<std::size_t>(a - begin)] == 0 && stencilAllowed(a);
+    };
+    const auto take = [&](Index first, Index count, Index stride) {
+        for (Index m = 0; m < count; ++m)
+            taken[static_cast<std::size_t>(first + m * stride - begin)] = 1;
+        appendBlocks(out.blocks, first, count, stride, stencilOf(first));
+    };
+    // Runs of consecutive particles first, then runs across rows among the rest: the strides
+    // tried are a's own positive neighbour offsets, shortest first.
     for (Index a = begin; a < end;) {
-        if (!stencilAllowed(a)) {
+        Index runEnd = a + 1;
+        if (free(a))
+            while (free(runEnd) && sameStencil(pairs, a, runEnd)) ++runEnd;
+        if (free(a) && runEnd - a >= kMinStencilRun) take(a, runEnd - a, 1);
+        a = runEnd;
+    }
+    for (Index a = begin; a < end; ++a) {
+        if (!free(a)) continue;
+        for (Index k = pairs.begin(a); k < pairs.end(a); ++k) {
+            const Index stride = pairs.neighbor[static_cast<std::size_t>(k)] - a;
+            if (stride <= 1) continue;
+            Index count = 1;
+            while (free(a + count * stride) && sameStencil(pairs, a, a + count * stride)) ++count;
+            if (count >= kMinStencilRun) {
+                take(a, count, stride);
+                break;
+            }
+        }
+    }
+    // The rest: CSR blocks of consecutive particles.
+    for (Index a = begin; a < end;) {
+        if (taken[static_cast<std::size_t>(a - begin)] != 0) {
             ++a;
             continue;
         }
         Index runEnd = a + 1;
-        while (runEnd < end && stencilAllowed(runEnd) && sameStencil(pairs, a, runEnd)) ++runEnd;
-        if (runEnd - a < kMinStencilRun) {
-            a = runEnd;
-            continue;
-        }
-        appendBlocks(out.blocks, csrBegin, a, kNoStencil);
-        const auto [it, inserted] =
-            known.try_emplace(relativeList(pairs, a), static_cast<Index>(out.stencils.size()));
-        if (inserted) out.stencils.push_back(makeStencil(pairs, a));
-        appendBlocks(out.blocks, a, runEnd, it->second);
-        csrBegin = a = runEnd;
+        while (runEnd < end && taken[static_cast<std::size_t>(runEnd - begin)] == 0) ++runEnd;
+        appendBlocks(out.blocks, a, runEnd - a, 1, kNoStencil);
+        a = runEnd;
     }
-    appendBlocks(out.blocks, csrBegin, end, kNoStencil);
+    std::sort(out.blocks.begin(), out.blocks.end(),
+              [](const ParticleBlock& x, const ParticleBlock& y) { return x.begin < y.begin; });
     return out;
 }
 

@@ -10,9 +10,15 @@
 // stencil that takes the general CSR path. The partition is read off the PairList itself, so
 // it holds for any pair list and never assumes a lattice.
 //
-// Invariants: blocks cover [begin, end) in order without gaps or overlap, at most kMaxBlock
-// particles each; for a stencil block and every a in it, the CSR list of a is exactly
-// {(a + delta[k], kernelId[k])} in the same order. Built once per body; read-only afterwards.
+// The lattice's faces normal to the fastest index (its "corner columns": a run along that index
+// is at most two particles long there) share a stencil along the next index instead: particles
+// a, a + s, a + 2s, ... with s the row length. Such a block has stride s; its strips gather the
+// fields (core/lanes.hpp) and still run far faster than the CSR path.
+//
+// Invariants: every particle of [begin, end) is in exactly one block, at most kMaxBlock
+// particles each, blocks sorted by their first particle; for a stencil block and every a in it,
+// the CSR list of a is exactly {(a + delta[k], kernelId[k])} in the same order. Built once per
+// body; read-only afterwards.
 #pragma once
 
 #include <cstdint>
@@ -46,14 +52,19 @@ struct Stencil {
 
 inline constexpr Index kNoStencil = -1;
 
+/// The particles begin, begin + stride, ... below end.
 struct ParticleBlock {
     Index begin = 0, end = 0;
     Index stencil = kNoStencil;  ///< into StencilBlocks::stencils, or kNoStencil (CSR path)
+    Index stride = 1;            ///< 1, or > 1 for a stencil block across rows (see above)
+    Index size() const { return (end - begin + stride - 1) / stride; }
+    Index particle(Index i) const { return begin + i * stride; }
 };
 
 struct StencilBlocks {
     std::vector<Stencil> stencils;
     std::vector<ParticleBlock> blocks;
+    Index particles = 0;  ///< in all blocks (the body's particle count)
     std::size_t bytes() const;
 };
 

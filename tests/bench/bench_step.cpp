@@ -5,7 +5,7 @@
 // particle and the time per phase.
 //
 // Usage:   gsph-bench [--cells N] [--steps S] [--kappa K] [--no-viscosity] [--no-hourglass]
-//                     [--johnson-cook] [--contact]
+//                     [--johnson-cook] [--contact] [--lanes W]
 // --contact: the cube as two bodies (a slab of its first 20 % in z driven at 50 m/s into the
 // rest), so the step also runs the contact search and the penalty forces between them.
 // Sample:  gsph-bench --cells 46 --steps 100      (≈ 1e5 particles)
@@ -20,6 +20,7 @@
 #include <fstream>
 #include <string>
 
+#include "core/lanes.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
 #include "support/contact_fixtures.hpp"
@@ -62,9 +63,15 @@ int main(int argc, char** argv) {
     bool contact = false;
     app.add_flag("--contact", contact,
                  "two bodies in contact (slab driven into the rest of the cube)");
+    int lanes = 8;
+    app.add_option("--lanes", lanes,
+                   "widest strip of the stencil kernels: 2 (SSE2), 4 (AVX2), 8 (AVX-512F; default: "
+                   "the widest the processor has)")
+        ->check(CLI::IsMember({2, 4, 8}));
     CLI11_PARSE(app, argc, argv);
 
     using namespace gsph;
+    limitLanes(lanes);
     const long baseline = peakResidentBytes();
     const auto tSetup = std::chrono::steady_clock::now();
     SolverOptions options;
@@ -116,6 +123,7 @@ int main(int argc, char** argv) {
     std::printf("threads              %d\n", threads);
     std::printf("material             %s\n",
                 plastic ? "Johnson–Cook + damage (Weldox 460E)" : "hypo-elastic steel");
+    std::printf("stencil strips       up to %d lanes\n", laneWidth());
     std::printf("viscosity/hourglass  %s/%s\n", noViscosity ? "off" : "on",
                 noHourglass ? "off" : "on");
     std::printf("contact              %s (%ld pairs in contact at the end)\n",

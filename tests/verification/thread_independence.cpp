@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // Results do not depend on the thread count (issue #2, DESIGN §9): every loop gathers into
 // its own particle and every sum over particles has a fixed order, so 1 and 2 threads give
-// bit-identical states (compared with memcmp, not a tolerance).
+// bit-identical states (compared with memcmp, not a tolerance). The same holds for the two
+// strip widths of the stencil kernels (core/lanes.hpp): every lane does the same operations.
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <cstring>
 
+#include "core/lanes.hpp"
 #include "core/parallel.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
@@ -118,6 +120,25 @@ TEST(ThreadIndependence, ContactRunsAreBitIdenticalToo) {
     EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
     EXPECT_GT(e1.contactEnergy, 0.0);
     EXPECT_NE(e1.externalWork, 0.0);
+}
+
+TEST(ThreadIndependence, EveryStripWidthGivesBitIdenticalStates) {
+    limitLanes(2);
+    EnergyReport ep;
+    const State portable = runWithThreads(1, &ep, kSteel);
+    EXPECT_GT(ep.kinetic, 1.0);
+    for (const int width : {4, 8}) {
+        limitLanes(width);
+        if (laneWidth() < width) continue;  // the processor has no such width
+        EnergyReport ew;
+        const State wide = runWithThreads(1, &ew, kSteel);
+        EXPECT_TRUE(bitIdentical(wide.x, portable.x)) << width << " lanes";
+        EXPECT_TRUE(bitIdentical(wide.v, portable.v)) << width << " lanes";
+        EXPECT_TRUE(bitIdentical(wide.cauchy, portable.cauchy)) << width << " lanes";
+        EXPECT_TRUE(bitIdentical(wide.F, portable.F)) << width << " lanes";
+        EXPECT_EQ(std::memcmp(&wide.ledger, &portable.ledger, sizeof(EnergyLedger)), 0);
+    }
+    limitLanes(8);
 }
 
 }  // namespace
