@@ -12,12 +12,9 @@
 #include <cstdio>
 #include <functional>
 
-#include "conversion.hpp"
-#include "gmsh_input.hpp"
-#include "io/particle_file.hpp"
+#include "converted_layout.hpp"
 #include "kinematics/deformation_gradient.hpp"
 #include "simulation.hpp"
-#include "spaces/metric.hpp"
 
 namespace gsph {
 namespace {
@@ -30,38 +27,15 @@ ElasticConstants steel() {
     return ElasticConstants(kSteelDensity, 200e9, 0.3);
 }
 
-struct Layout {
-    Reference ref;
-    preproc::ConversionStats stats;
-};
+using Layout = test::ConvertedLayout;
 
-/// A sample geometry converted as gsph-preproc converts it, and the run's reference built from
-/// the particles as gsph-solve builds it (pairs and geometry included).
-Layout convertAndBuild(const std::string& name, const Parameters& parameters, double kappa = 1.2) {
-    const std::string path = std::string(GSPH_SOURCE_DIR) + "/geometries/" + name;
-    std::vector<std::string> warnings;
-    const preproc::HexMesh mesh =
-        preproc::readHexMesh(path, preproc::MeshReadOptions{parameters}, warnings);
-    preproc::Conversion c = preproc::convertHexMesh(mesh);
-    warnings.insert(warnings.end(), c.warnings.begin(), c.warnings.end());
-    for (const std::string& w : warnings) ADD_FAILURE() << path << ": warning: " << w;
-    validateParticleFile(c.particles);
-    Layout out{buildReference(c.particles, std::vector<double>{kSteelDensity}, kappa),
-               std::move(c.stats)};
-    buildPairs(out.ref);
-    computeGeometry(out.ref);
-    return out;
+Layout convertAndBuild(const std::string& name, const Parameters& parameters) {
+    return test::convertAndBuild(name, parameters, kSteelDensity);
 }
 
 /// The O-grid cylinder of radius R = 1 and length L along z (taylor_bar.geo, no grading).
 Layout ogrid(int n, int nr, int nz, double length, double core = 0.4) {
-    return convertAndBuild("taylor_bar.geo", {{"R", 1.0},
-                                              {"L", length},
-                                              {"core", core},
-                                              {"n", n},
-                                              {"nr", nr},
-                                              {"nz", nz},
-                                              {"grading", 1.0}});
+    return test::ogridCylinder(1.0, length, n, nr, nz, kSteelDensity, core);
 }
 
 double worstMetricCondition(const preproc::ConversionStats& stats) {
@@ -79,7 +53,8 @@ void expectRestStaysAtRest(const char* name, Layout layout, int steps) {
         deformationGradient(layout.ref, layout.ref.X, F);
         for (const Mat3& Fa : F) worstF = std::max(worstF, (Fa - Mat3::Identity()).norm());
     }
-    SolverOptions options;
+    SolverOptions options;  // the cases' defaults (docs/case-format.md)
+    options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;
     Simulation sim(std::move(layout.ref), {HypoElastic(steel())}, options);
     const double c = steel().barWaveSpeed();
