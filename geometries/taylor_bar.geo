@@ -57,7 +57,11 @@ layers = nz * refine;
 ratio = grading^(1 / refine);
 For m In {1:layers}
   one[m - 1] = 1;
-  height[m - 1] = (ratio == 1) ? m / layers : (ratio^m - 1) / (ratio^layers - 1);
+  If (ratio == 1)  // (gmsh evaluates both branches of ?:, so 0/0 would stop it)
+    height[m - 1] = m / layers;
+  Else
+    height[m - 1] = (ratio^m - 1) / (ratio^layers - 1);
+  EndIf
 EndFor
 Extrude {0, 0, L} { Surface{section[]}; Layers{one[], height[]}; Recombine; }
 

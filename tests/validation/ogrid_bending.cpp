@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// An elastic cylinder bending on the O-grid (issue #4, DESIGN §6–7): free vibration of a
+// free–free steel cylinder, L = 15 D, started with the velocity of the Euler–Bernoulli first
+// bending mode; the period from the modal displacement's first return to zero (half a period)
+// against Euler–Bernoulli, on the O-grid (Cartesian core + cylindrical annulus, two spaces) and
+// on uniform Cartesian lattices of the same cylinder (the particles of a box lattice inside the
+// circle: a staircase section). Minutes on one core.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "simulation.hpp"
+#include "spaces/analytic_maps.hpp"
+#include "tools/converted_layout.hpp"
+
+namespace gsph {
+namespace {
+
+constexpr double kRadius = 1.0, kLength = 30.0;
+constexpr double kBetaL = 4.730040744862704;  // first root of cos βL cosh βL = 1
+
+ElasticConstants steel() {
+    return ElasticConstants(7800.0, 200e9, 0.3);
+}
+
+// Euler–Bernoulli free–free mode 1 along z ∈ [0, L], and its period 2π / (β² √(EI/ρA)).
+double modeShape(double z) {
+    const double b = kBetaL / kLength * z;
+    const double s =
+        (std::cosh(kBetaL) - std::cos(kBetaL)) / (std::sinh(kBetaL) - std::sin(kBetaL));
+    return std::cosh(b) + std::cos(b) - s * (std::sinh(b) + std::sin(b));
+}
+
+double eulerBernoulliPeriod() {
+    const double beta = kBetaL / kLength;
+    const double radiusOfGyration = kRadius / 2.0;  // √(I/A) of a disc
+    return 2.0 * std::acos(-1.0) / (beta * beta * steel().barWaveSpeed() * radiusOfGyration);
+}
+
+struct BendingRun {
+    int particles = 0;
+    double period = 0.0;
+};
+
+// Half a period: the modal displacement q(t) = Σ m φ u_x rises from 0 and returns to 0.
+BendingRun halfPeriod(Reference ref) {
+    SolverOptions options;
+    options.hourglass = 0.1;  // the band needs it (docs/theory.md)
+    double mass = 0.0;
+    for (double m : ref.mass) mass += m;
+    std::printf("[bending] mass Σ ρ0 ω det M = %.4f of ρ0 π R² L\n",
+                mass / (7800.0 * std::acos(-1.0) * kRadius * kRadius * kLength));
+    Simulation sim(std::move(ref), {HypoElastic(steel())}, options);
+    const double v0 = 1e-3 * steel().barWaveSpeed();
+    sim.setVelocity([&](const Vec3& X) { return Vec3(v0 * modeShape(X[2]), 0, 0); });
+    const auto modal = [&] {
+        double q = 0.0;
+        for (std::size_t a = 0; a < sim.state().x.size(); ++a)
+            q += sim.reference().mass[a] * modeShape(sim.reference().X[a][2]) *
+                 (sim.state().x[a][0] - sim.reference().X[a][0]);
+        return q;
+    };
+    const double estimate = eulerBernoulliPeriod();
+    double qPrevious = 0.0, tPrevious = 0.0, qMax = 0.0, crossing = 0.0;
+    sim.start();
+    while (sim.state().time < 0.8 * estimate && crossing == 0.0) {
+        sim.step();
+        const double q = modal(), t = sim.state().time;
+        qMax = std::max(qMax, q);
+        if (qMax > 0.0 && q <= 0.0 && qPrevious > 0.0 && qPrevious < 0.5 * qMax)
+            crossing = tPrevious + (t - tPrevious) * qPrevious / (qPrevious - q);
+        qPrevious = q, tPrevious = t;
+    }
+    return {sim.reference().size(), 2.0 * crossing};
+}
+
+// The particles of a uniform box lattice (spacing 2R/m across, L/nz along z) inside r ≤ R.
+Reference cartesianCylinder(int m, int nz) {
+    const Reference box = latticeReference(
+        gradedBoxMap(Vec3(2 * kRadius, 2 * kRadius, kLength), {}, Vec3(-kRadius, -kRadius, 0)), 3,
+        {m, m, nz}, 7800.0, 1.2);
+    Reference ref;
+    ref.dim = box.dim;
+    ref.kappa = box.kappa;
+    ref.spaces = box.spaces;
+    for (std::size_t a = 0; a < box.X.size(); ++a) {
+        if (std::hypot(box.X[a][0], box.X[a][1]) > kRadius) continue;
+        ref.X.push_back(box.X[a]);
+        ref.theta.push_back(box.theta[a]);
+        ref.density.push_back(box.density[a]);
+        ref.volume.push_back(box.volume[a]);
+        ref.body.push_back(0);
+        ref.space.push_back(0);
+    }
+    buildPairs(ref);
+    computeGeometry(ref);
+    return ref;
+}
+
+// Disabled: issue #4 asks for 3 % on the O-grid with fewer particles than a uniform lattice, and
+// the O-grid does not get there yet. Measured (hourglass α = 0.1): O-grid 4×4 + 2×16 × 60 layers
+// (2880 particles) −9.0 % (pairwise form alone, no band: +14.3 %; its mass Σ ρ0 ω det M is
+// 0.903 of ρ0πR²L: the metric's kernel sum over ±2.4 angular cells of 22.5° is far from the
+// arc); Cartesian staircase 6×6 (1920) +5.1 %, 8×8 (3120) +5.8 %. Timoshenko lengthens the
+// period by roughly 1 % at L = 15 D (estimate). Run with --gtest_also_run_disabled_tests
+// (docs/theory.md).
+TEST(OgridValidation, DISABLED_FreeFreeCylinderFirstBendingPeriod) {
+    const double exact = eulerBernoulliPeriod();
+    struct Case {
+        const char* name;
+        BendingRun run;
+    };
+    std::vector<Case> cases;
+    const auto report = [&](const char* name, BendingRun run) {
+        std::printf(
+            "[bending] %-34s %6d particles: T = %.5e s, error %+.2f %% (Euler–Bernoulli "
+            "%.5e s)\n",
+            name, run.particles, run.period, 100 * (run.period / exact - 1), exact);
+        std::fflush(stdout);
+        cases.push_back({name, run});
+    };
+    report("O-grid 4x4 core + 2x16 annulus x60",
+           halfPeriod(test::ogridCylinder(kRadius, kLength, 4, 2, 60, 7800.0).ref));
+    report("Cartesian 6x6 box x60", halfPeriod(cartesianCylinder(6, 60)));
+    report("Cartesian 8x8 box x60", halfPeriod(cartesianCylinder(8, 60)));
+    const double ogridError = std::abs(cases[0].run.period / exact - 1);
+    EXPECT_LT(ogridError, 0.03);
+}
+
+}  // namespace
+}  // namespace gsph
