@@ -79,7 +79,8 @@ void Simulation::resume(State state, const std::string& source) {
     checkStateShape(state, State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs())),
                     source);
     state_ = std::move(state);
-    integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_);
+    integrator_ =
+        std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);
     integrator_->resume(state_);
 }
 

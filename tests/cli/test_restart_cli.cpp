@@ -163,6 +163,48 @@ TEST_F(Restart, JohnsonCookRunWithDamageAndBrokenBondsIsBitIdentical) {
     EXPECT_GT(broken(stopped.bondIntact), 0) << "bonds broke before the interruption";
 }
 
+// The bar flying into a rigid wall with friction, under gravity and a force on one set: the
+// wall's push and friction, the loads' work and the contact energy carry across the restart.
+const char* kWallCase = R"([run]
+particles = "particles.h5"
+end_time = 4.0e-5
+output_interval = 4.0e-6
+gravity = [0.0, 0.0, -9.81]
+
+[[material]]
+name = "steel"
+model = "elastic"
+density = 7850.0
+youngs_modulus = 200.0e9
+poisson_ratio = 0.3
+
+[[body]]
+group = "bar"
+material = "steel"
+velocity = [-20.0, 0.0, 1.0]
+
+[[set]]
+name = "load"
+force = [0.0, 50.0, 0.0]
+
+[[wall]]
+name = "anvil"
+point = [-1.0e-4, 0.0, 0.0]
+normal = [1.0, 0.0, 0.0]
+friction = 0.3
+)";
+
+TEST_F(Restart, WallGravityAndSetForceRunIsBitIdentical) {
+    const fs::path caseFile = dir_ / "wall.toml";
+    std::ofstream(caseFile) << kWallCase;
+    const State stopped = interruptAndRestart(caseFile, 150);
+    EXPECT_GT(stopped.ledger.contactEnergy, 0.0) << "the bar presses on the wall at the stop";
+    const Snapshot last = readSnapshot(dir_ / "B/snapshot_000010.h5");
+    double momentumX = 0.0;
+    for (Index a = 0; a < last.size(); ++a) momentumX += last.v[static_cast<std::size_t>(a)].x();
+    EXPECT_GT(momentumX, 0.0) << "the wall turned the bar round after the restart";
+}
+
 TEST_F(Restart, SigtermWritesACheckpointThatContinuesTheRunExactly) {
     // A long run, stopped by SIGTERM once it is stepping (its first snapshot exists, so the
     // handler is installed); then A runs straight to 40 steps past that point and B restarts
