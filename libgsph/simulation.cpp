@@ -67,10 +67,16 @@ void Simulation::addWall(Wall wall) {
     walls_.push_back(std::move(wall));
 }
 
-void Simulation::start() {
-    if (integrator_) return;
+// The one place the integrator is built: a fresh start and a resumed run see the same
+// constraints, loads and walls.
+void Simulation::makeIntegrator() {
     integrator_ =
         std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);
+}
+
+void Simulation::start() {
+    if (integrator_) return;
+    makeIntegrator();
     integrator_->initialize(state_);
 }
 
@@ -79,8 +85,7 @@ void Simulation::resume(State state, const std::string& source) {
     checkStateShape(state, State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs())),
                     source);
     state_ = std::move(state);
-    integrator_ =
-        std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);
+    makeIntegrator();
     integrator_->resume(state_);
 }
 

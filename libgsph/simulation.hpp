@@ -69,6 +69,8 @@ class Simulation {
     EnergyReport energy() const { return measureEnergy(ref_, state_, bodies_); }
 
   private:
+    void makeIntegrator();
+
     Reference ref_;
     std::vector<Material> materials_;
     SolverOptions options_;

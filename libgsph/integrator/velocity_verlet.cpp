@@ -405,13 +405,13 @@ double VelocityVerlet::stableTimeStep(const State& state) const {
     if (ratio > 0.0 && std::isfinite(ratio) && !(dt < floor)) return dt;
     // Failure only: name the particle that limits Δt (the first NaN, or the smallest ratio).
     Index worst = 0;
-    for (Index a = 0; a < ref_.size(); ++a) {
+    double worstRatio = ref_.size() > 0 ? ratioOf(0) : 0.0;
+    for (Index a = 0; a < ref_.size() && !std::isnan(worstRatio); ++a) {
         const double r = ratioOf(a);
-        if (std::isnan(r)) {
+        if (std::isnan(r) || r < worstRatio) {
             worst = a;
-            break;
+            worstRatio = r;
         }
-        if (r < ratioOf(worst)) worst = a;
     }
     const auto iw = static_cast<std::size_t>(worst);
     char detail[200];

@@ -89,7 +89,7 @@ class VelocityVerlet {
   public:
     VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
                    std::vector<VelocityConstraint> constraints, SolverOptions options,
-                   const Loads& loads = {}, std::vector<Wall> walls = {});
+                   const Loads& loads, std::vector<Wall> walls);
 
     /// Computes a_n, the stress factors and Δt_n for a state (once, before the first step).
     void initialize(State& state);

@@ -145,9 +145,7 @@ void writeCheckpoint(const std::filesystem::path& path, const State& state, cons
                      const Provenance& provenance) {
     writeAtomically(path, [&](const std::filesystem::path& temp) {
         h5::File f(temp, h5::File::Mode::Create);
-        f.setAttribute("/", "format", kCheckpointFormat);
-        f.setAttribute("/", "format_version_major", std::int64_t{kCheckpointFormatMajor});
-        f.setAttribute("/", "format_version_minor", std::int64_t{kCheckpointFormatMinor});
+        writeFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor, kCheckpointFormatMinor);
         writeProvenance(f, provenance);
         state.forEachArray(
             [&](const char* name, const auto& array) { writeArray(f, kStateGroup + name, array); });
@@ -161,12 +159,7 @@ void writeCheckpoint(const std::filesystem::path& path, const State& state, cons
 Checkpoint readCheckpoint(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw IoError(path.string() + ": no such checkpoint file");
     h5::File f(path, h5::File::Mode::ReadOnly);
-    if (!f.hasAttribute("/", "format") || f.stringAttribute("/", "format") != kCheckpointFormat)
-        throw IoError(path.string() + ": not a gsph-checkpoint file");
-    if (f.integerAttribute("/", "format_version_major") != kCheckpointFormatMajor)
-        throw IoError(path.string() + ": unsupported gsph-checkpoint major version " +
-                      std::to_string(f.integerAttribute("/", "format_version_major")) +
-                      " (this build reads " + std::to_string(kCheckpointFormatMajor) + ")");
+    checkFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor);
     Checkpoint c;
     c.provenance = readProvenance(f);
     c.state.forEachArray(

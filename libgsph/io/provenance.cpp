@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "io/provenance.hpp"
 
+#include <cstdint>
+
+#include "core/error.hpp"
 #include "io/sha256.hpp"
 
 namespace gsph {
@@ -37,6 +40,21 @@ Provenance readProvenance(const h5::File& file) {
     p.parameters = get("source_parameters");
     p.units = get("units");
     return p;
+}
+
+void writeFormatVersion(h5::File& file, const std::string& format, int major, int minor) {
+    file.setAttribute("/", "format", format);
+    file.setAttribute("/", "format_version_major", std::int64_t{major});
+    file.setAttribute("/", "format_version_minor", std::int64_t{minor});
+}
+
+void checkFormatVersion(const h5::File& file, const std::string& format, int major) {
+    if (!file.hasAttribute("/", "format") || file.stringAttribute("/", "format") != format)
+        throw IoError(file.name() + ": not a " + format + " file");
+    const auto found = file.integerAttribute("/", "format_version_major");
+    if (found != major)
+        throw IoError(file.name() + ": unsupported " + format + " major version " +
+                      std::to_string(found) + " (this build reads " + std::to_string(major) + ")");
 }
 
 }  // namespace gsph

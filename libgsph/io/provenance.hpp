@@ -30,4 +30,9 @@ void writeProvenance(h5::File& file, const Provenance& provenance);
 /// Reads them back; missing attributes stay empty (units default "SI" only if written so).
 Provenance readProvenance(const h5::File& file);
 
+/// Root attributes format, format_version_major, format_version_minor (snapshots, checkpoints).
+void writeFormatVersion(h5::File& file, const std::string& format, int major, int minor);
+/// Throws IoError naming the file unless its root says `format` with major version `major`.
+void checkFormatVersion(const h5::File& file, const std::string& format, int major);
+
 }  // namespace gsph

@@ -78,9 +78,7 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
                    const Provenance& provenance) {
     writeAtomically(path, [&](const std::filesystem::path& temp) {
         h5::File f(temp, h5::File::Mode::Create);
-        f.setAttribute("/", "format", kSnapshotFormat);
-        f.setAttribute("/", "format_version_major", std::int64_t{kSnapshotFormatMajor});
-        f.setAttribute("/", "format_version_minor", std::int64_t{kSnapshotFormatMinor});
+        writeFormatVersion(f, kSnapshotFormat, kSnapshotFormatMajor, kSnapshotFormatMinor);
         writeProvenance(f, provenance);
         const std::size_t n = state.x.size();
         const double time = state.time;
@@ -113,10 +111,7 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
 Snapshot readSnapshot(const std::filesystem::path& path) {
     if (!std::filesystem::exists(path)) throw IoError(path.string() + ": no such file");
     h5::File f(path, h5::File::Mode::ReadOnly);
-    if (!f.hasAttribute("/", "format") || f.stringAttribute("/", "format") != kSnapshotFormat)
-        throw IoError(path.string() + ": not a gsph-snapshot file");
-    if (f.integerAttribute("/", "format_version_major") != kSnapshotFormatMajor)
-        throw IoError(path.string() + ": unsupported gsph-snapshot major version");
+    checkFormatVersion(f, kSnapshotFormat, kSnapshotFormatMajor);
     Snapshot s;
     s.provenance = readProvenance(f);
     std::vector<std::size_t> dims;
