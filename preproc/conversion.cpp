@@ -11,6 +11,7 @@
 #include "hex_topology.hpp"
 #include "space_gluing.hpp"
 #include "space_map.hpp"
+#include "uniform_lattice.hpp"
 
 namespace gsph::preproc {
 
@@ -328,6 +329,12 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
     blocks.reserve(mesh.volumes.size());
     for (const HexVolume& v : mesh.volumes) blocks.push_back(indexBlock(mesh, v, adjacency));
     const GluingResult glued = glueBlocks(blocks, bodyOfVolume);
+    if (options.latticeSpacing != 0.0) {  // the uniform layout of standard SPH instead
+        out.stats.minEdge = INFINITY;
+        fillUniformLattice(mesh, blocks, glued, bodyOfVolume, adjacency, options.latticeSpacing,
+                           out);
+        return out;
+    }
 
     const std::size_t n = mesh.hexes.size();
     pf.X.resize(n);

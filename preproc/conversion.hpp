@@ -43,6 +43,9 @@ inline constexpr double kMaxOversetKappa = 3.0;
 struct ConversionOptions {
     std::vector<PriorityRule> priorities;  ///< --priority VOLUME=N (overset.hpp)
     double oversetKappa = 1.5;             ///< --overset-kappa: transients within 2κΔθ
+    /// --lattice H > 0: instead of one particle per hex, the uniform Cartesian layout of
+    /// spacing ≈ H filling each body (uniform_lattice.hpp); 0: the hex layout.
+    double latticeSpacing = 0.0;
 };
 
 /// Worst condition number σmax/σmin of ∂X/∂θ over a space's particles (hex Jacobian at the
@@ -67,11 +70,20 @@ struct ConversionStats {
     double oversetKappa = 0.0;                   ///< κ of the transient selection
     std::vector<HoleCutReport> cuts;             ///< per pair (space, a space outranking it)
     std::vector<TransientReport> transients;     ///< per ordered pair of spaces of a body
+    /// --lattice only, per body: the spacing along x, y, z [m], the cells of its bounding box,
+    /// and the volume of its hexes (the particles' volume is the staircase's).
+    struct Lattice {
+        Vec3 spacing = Vec3::Zero();
+        Int3 cells = {0, 0, 0};
+        double meshVolume = 0.0;
+    };
+    std::vector<Lattice> lattice;
 };
 
 struct Conversion {
-    ParticleFile particles;                      ///< everything but the provenance
-    std::vector<std::size_t> elementOfParticle;  ///< source hex (gmsh element tag) per particle
+    ParticleFile particles;  ///< everything but the provenance
+    /// source hex (gmsh element tag) per particle; empty for a --lattice layout
+    std::vector<std::size_t> elementOfParticle;
     ConversionStats stats;
     std::vector<std::string> warnings;
 };

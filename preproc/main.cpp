@@ -3,13 +3,14 @@
 //
 // Usage:
 //   gsph-preproc INPUT -o PARTICLES.h5 [--set NAME=VALUE]... [--priority VOLUME=N]...
-//                [--overset-kappa K] [--quiet]
+//                [--overset-kappa K] [--lattice H] [--quiet]
 //
 // Sample runs:
 //   gsph-preproc geometries/graded_bar.geo -o bar.h5
 //   gsph-preproc geometries/taylor_bar.geo -o taylor.h5 --set refine=2
 //   gmsh -3 geometries/notched_plate.geo -o plate.msh && gsph-preproc plate.msh -o plate.h5
 //   gsph-preproc geometries/two_blocks.geo -o blocks.h5 --set overlap=2 --priority 1=1
+//   gsph-preproc geometries/taylor_bar.geo -o uniform.h5 --lattice 0.475e-3
 //
 // Description:
 //   INPUT is a .geo (meshed in 3-D in-process by gmsh) or a .msh. Every gmsh volume must be a
@@ -19,7 +20,9 @@
 //   overset layout (DESIGN §6): where spaces overlap, the one of higher priority (--priority,
 //   default: the finer one) keeps its particles and the other's are cut; particles within
 //   2·K·Δθ of another space's particles become transient there (--overset-kappa K, default
-//   1.5). The file format is in docs/formats.md. On error: one line on stderr naming the file and
+//   1.5). --lattice H instead fills each body with the uniform Cartesian lattice of standard SPH
+//   (spacing ≈ H, sites inside the meshed region: uniform_lattice.hpp), for comparisons. The
+//   file format is in docs/formats.md. On error: one line on stderr naming the file and
 //   the fault, exit status 1, and no output file.
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -108,6 +111,10 @@ int main(int argc, char** argv) {
     app.add_option("--overset-kappa", convertOptions.oversetKappa,
                    "K: particles within 2*K*dtheta of another space's particles are transient "
                    "there (default 1.5: enough for runs with kappa <= K)");
+    app.add_option("--lattice", convertOptions.latticeSpacing,
+                   "H [m]: write the uniform Cartesian layout of standard SPH instead (spacing H, "
+                   "adjusted per axis to tile each body's bounding box; the sites inside the "
+                   "mesh), for comparison with the hex layout");
     app.add_flag("-q,--quiet", quiet, "print nothing but warnings and errors");
     app.set_version_flag("--version", gsph::kVersion);
     CLI11_PARSE(app, argc, argv);

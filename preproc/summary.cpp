@@ -66,6 +66,14 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
     }
     out << format("  spacing    hex edge length from %.4e m to %.4e m\n", stats.minEdge,
                   stats.maxEdge);
+    for (std::size_t b = 0; b < stats.lattice.size(); ++b) {
+        const ConversionStats::Lattice& l = stats.lattice[b];
+        out << format(
+            "  lattice    body %-3zu uniform Cartesian, spacing %.4e x %.4e x %.4e m, box %dx%dx%d "
+            "cells; volume %.6e m^3 = %.4f of the mesh's\n",
+            b, l.spacing[0], l.spacing[1], l.spacing[2], l.cells[0], l.cells[1], l.cells[2],
+            bodyVolume[b], bodyVolume[b] / l.meshVolume);
+    }
     if (pf.sets.empty()) {
         out << "  sets       none\n";
     } else {

@@ -110,6 +110,61 @@ TEST(Conversion, LayoutPositionsVolumesBodiesSets) {
     EXPECT_TRUE(conv.warnings.empty());
 }
 
+// --lattice on a box body meshed with graded cells and a second, separate box: the lattice
+// tiles each box exactly (spacing adjusted per axis), one Cartesian space per body, and a face
+// group's set is the lattice layer on that face.
+TEST(Conversion, UniformLatticeTilesBoxBodies) {
+    MeshBuilder builder(5);
+    const auto gradedBox = [](const MeshBuilder::Key& k) {  // [0, 3] × [0, 1] × [0, 2], graded
+        return Vec3(3.0 * std::pow(k[0] / 3.0, 1.3), 0.5 * k[1], std::pow(k[2] / 2.0, 0.8) * 2.0);
+    };
+    builder.addBlock(1, {3, 2, 2}, test::offsetKey({0, 0, 0}), gradedBox);
+    builder.addBlock(2, {1, 1, 1}, test::offsetKey({10, 0, 0}), [](const MeshBuilder::Key& k) {
+        return Vec3(5.0 + 0.1 * (k[0] - 10), 0.1 * k[1], 0.1 * k[2]);  // [5, 5.1] × [0, 0.1]²
+    });
+    HexMesh& raw = builder.raw();
+    raw.volumeGroups = {{10, "bar", {1}}, {20, "cube", {2}}};
+    SurfaceGroup end{5, "end", {}};
+    for (int k = 0; k < 2; ++k) {
+        for (int j = 0; j < 2; ++j) {
+            end.quads.push_back({builder.nodeOf({0, j, k}), builder.nodeOf({0, j + 1, k}),
+                                 builder.nodeOf({0, j + 1, k + 1}), builder.nodeOf({0, j, k + 1})});
+        }
+    }
+    raw.surfaceGroups = {end};
+    ConversionOptions options;
+    options.latticeSpacing = 0.26;  // → 12 × 4 × 8 cells of 0.25 on the bar, 1 cell on the cube
+    const Conversion conv = convertHexMesh(builder.build(), options);
+    const ParticleFile& f = conv.particles;
+    validateParticleFile(f);
+    test::expectLatticeLayout(f);
+    ASSERT_EQ(f.spaces.size(), 2u);
+    EXPECT_EQ(f.spaces[0].cells, (Int3{12, 4, 8}));
+    EXPECT_EQ(f.spaces[1].cells, (Int3{1, 1, 1}));
+    ASSERT_EQ(f.size(), 12 * 4 * 8 + 1);
+    double barVolume = 0.0;
+    for (Index a = 0; a < f.size(); ++a) {
+        if (f.body[a] != 0) continue;
+        const auto& c = f.latticeIndex[a];
+        EXPECT_LT(
+            (f.X[a] - Vec3(0.25 * (c[0] + 0.5), 0.25 * (c[1] + 0.5), 0.25 * (c[2] + 0.5))).norm(),
+            1e-14);
+        EXPECT_EQ(f.theta[a], Vec3(c[0] + 0.5, c[1] + 0.5, c[2] + 0.5));
+        barVolume += f.volume[a];
+    }
+    EXPECT_NEAR(barVolume, 6.0, 1e-13);
+    EXPECT_LT((f.X.back() - Vec3(5.05, 0.05, 0.05)).norm(), 1e-14);
+    EXPECT_NEAR(f.volume.back(), 1e-3, 1e-17);
+    ASSERT_EQ(conv.stats.lattice.size(), 2u);
+    EXPECT_NEAR(conv.stats.lattice[0].meshVolume, 6.0, 1e-13);
+    const auto& members = f.sets.at("end");
+    ASSERT_EQ(members.size(), 4u * 8u);
+    for (Index a : members) EXPECT_EQ(f.latticeIndex[a][0], 0);
+
+    options.latticeSpacing = -1.0;
+    EXPECT_THROW(convertHexMesh(builder.build(), options), InputError);
+}
+
 TEST(Conversion, NoGroupsMeansOneBody) {
     HexMesh mesh = twoBodies();
     mesh.volumeGroups.clear();

@@ -268,6 +268,54 @@ void printMetric(const char* name, const Conversion& c) {
     }
 }
 
+// --lattice on the Taylor bar: the uniform Cartesian layout of standard SPH from the same .geo.
+// Kept: exactly the sites inside the meshed 32-gon (the polygon's apothem R cos(π/32) bounds
+// the sites that must be kept, R those that may be); the sets hug their faces.
+TEST(Geometries, TaylorBarUniformLattice) {
+    std::vector<std::string> warnings;
+    const HexMesh mesh = readHexMesh(geometry("taylor_bar.geo"), {}, warnings);
+    ConversionOptions options;
+    options.latticeSpacing = 0.95e-3;  // 8 cells across the 7.6 mm diameter
+    const Conversion c = convertHexMesh(mesh, options);
+    const ParticleFile& f = c.particles;
+    validateParticleFile(f);
+    EXPECT_TRUE(c.warnings.empty());
+    ASSERT_EQ(f.spaces.size(), 1u);
+    const double R = 3.8e-3, L = 25.4e-3;
+    EXPECT_EQ(f.spaces[0].cells, (Int3{8, 8, 27}));
+    const double h = 2 * R / 8, hz = L / 27;
+    int inside = 0, kept = 0;
+    std::vector<char> isKept(8 * 8, 0);
+    for (Index a = 0; a < f.size(); ++a) {
+        const auto& i = f.latticeIndex[a];
+        if (i[2] == 0) isKept[i[0] + 8 * i[1]] = 1;
+        EXPECT_NEAR(f.X[a][2], (i[2] + 0.5) * hz, 1e-15);
+        EXPECT_NEAR(f.volume[a], h * h * hz, 1e-20);
+    }
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 0; i < 8; ++i) {
+            const double r = std::hypot(-R + (i + 0.5) * h, -R + (j + 0.5) * h);
+            if (r < R * std::cos(std::acos(-1.0) / 32)) {
+                ++inside;
+                EXPECT_TRUE(isKept[i + 8 * j]) << i << "," << j;
+            }
+            if (r > R) {
+                EXPECT_FALSE(isKept[i + 8 * j]) << i << "," << j;
+            }
+            kept += isKept[i + 8 * j];
+        }
+    }
+    EXPECT_EQ(f.size(), kept * 27);
+    EXPECT_GE(kept, inside);
+    EXPECT_EQ(f.sets.at("impact").size(), static_cast<std::size_t>(kept));
+    for (Index a : f.sets.at("impact")) EXPECT_EQ(f.latticeIndex[a][2], 0);
+    for (Index a : f.sets.at("free_end")) EXPECT_EQ(f.latticeIndex[a][2], 26);
+    for (Index a : f.sets.at("lateral")) {
+        EXPECT_GT(std::hypot(f.X[a][0], f.X[a][1]), R - 1.5 * h);
+    }
+    EXPECT_GE(f.sets.at("lateral").size(), 27u * 20u);  // the outer ring of 20 per layer
+}
+
 TEST(Geometries, QuarterCylinderTransientsOnBothSides) {
     // Core cells 0.625 mm, annulus cells 0.5 to 1 mm: each side reaches 3 of its cells (2κ,
     // κ = 1.5) into the other space, so from layer 3 on nothing is transient.
