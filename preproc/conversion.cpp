@@ -110,14 +110,7 @@ void checkElementOrientation(const HexMesh& mesh) {
 void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
                const std::vector<Index>& particleOfHex, Conversion& out) {
     for (const SurfaceGroup& g : mesh.surfaceGroups) {
-        const std::string name = g.name.empty() ? "surface_" + std::to_string(g.tag) : g.name;
-        if (name.find('/') != std::string::npos || name == "." || name == "..") {
-            throw MeshError(mesh.source + ": physical surface '" + name +
-                            "' cannot name a particle set ('/' is not allowed)");
-        }
-        if (out.particles.sets.count(name) != 0) {
-            throw MeshError(mesh.source + ": two physical surfaces are named '" + name + "'");
-        }
+        const std::string name = particleSetName(mesh, g, out.particles);
         std::vector<Index>& members = out.particles.sets[name];
         for (const auto& quad : g.quads) {
             std::array<Index, 2> found{};
@@ -314,6 +307,20 @@ void reportMetric(const Assembly& as, Conversion& out) {
 }
 
 }  // namespace
+
+std::string particleSetName(const HexMesh& mesh, const SurfaceGroup& group,
+                            const ParticleFile& particles) {
+    const std::string name =
+        group.name.empty() ? "surface_" + std::to_string(group.tag) : group.name;
+    if (name.find('/') != std::string::npos || name == "." || name == "..") {
+        throw MeshError(mesh.source + ": physical surface '" + name +
+                        "' cannot name a particle set ('/' is not allowed)");
+    }
+    if (particles.sets.count(name) != 0) {
+        throw MeshError(mesh.source + ": two physical surfaces are named '" + name + "'");
+    }
+    return name;
+}
 
 Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options) {
     if (mesh.hexes.empty()) {

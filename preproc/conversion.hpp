@@ -90,4 +90,9 @@ struct Conversion {
 
 Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options = {});
 
+/// The particle set of a physical surface group: its name, or "surface_<tag>" when unnamed.
+/// Throws MeshError naming mesh.source if the name holds '/' or `particles` has it already.
+std::string particleSetName(const HexMesh& mesh, const SurfaceGroup& group,
+                            const ParticleFile& particles);
+
 }  // namespace gsph::preproc

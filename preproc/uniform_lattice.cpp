@@ -78,14 +78,7 @@ void buildLatticeSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
                       Conversion& out) {
     ParticleFile& pf = out.particles;
     for (const SurfaceGroup& g : mesh.surfaceGroups) {
-        const std::string name = g.name.empty() ? "surface_" + std::to_string(g.tag) : g.name;
-        if (name.find('/') != std::string::npos || name == "." || name == "..") {
-            throw MeshError(mesh.source + ": physical surface '" + name +
-                            "' cannot name a particle set ('/' is not allowed)");
-        }
-        if (pf.sets.count(name) != 0) {
-            throw MeshError(mesh.source + ": two physical surfaces are named '" + name + "'");
-        }
+        const std::string name = particleSetName(mesh, g, pf);
         std::vector<Index>& members = pf.sets[name];
         for (const auto& quad : g.quads) {
             std::array<Index, 2> found{};
