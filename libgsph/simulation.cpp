@@ -69,6 +69,11 @@ void Simulation::addWall(Wall wall) {
 
 // The one place the integrator is built: a fresh start and a resumed run see the same
 // constraints, loads and walls.
+const std::vector<Vec3>& Simulation::wallForces() const {
+    static const std::vector<Vec3> none;
+    return integrator_ ? integrator_->walls().totalForces() : none;
+}
+
 void Simulation::makeIntegrator() {
     integrator_ =
         std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);

@@ -7,6 +7,7 @@
 #include <initializer_list>
 
 #include "core/error.hpp"
+#include "history.hpp"  // columnName: each wall its own columns
 
 namespace gsph::solver {
 namespace {
@@ -152,15 +153,37 @@ void readContact(const std::string& file, const toml::table& root, CaseConfig& c
 }
 
 WallSpec readWall(const std::string& file, const toml::table& t, std::size_t index) {
-    TableReader r(file, t, "[[wall]]", {"name", "point", "normal", "velocity", "friction"});
+    TableReader r(file, t, "[[wall]]",
+                  {"name", "shape", "point", "normal", "axis", "radius", "velocity", "friction"});
     WallSpec w;
     w.line = r.line();
     w.name = r.text("name", "wall " + std::to_string(index), false);
+    const std::string shape = r.text("shape", "plane", false);
+    if (shape != "plane" && shape != "cylinder")
+        r.fail(t.get("shape"),
+               "'shape' in [[wall]] must be \"plane\" or \"cylinder\", got '" + shape + "'");
+    w.cylinder = shape == "cylinder";
+    // The keys of the other shape are errors, not silently ignored.
+    const std::vector<std::string> otherKeys = w.cylinder
+                                                   ? std::vector<std::string>{"normal"}
+                                                   : std::vector<std::string>{"axis", "radius"};
+    for (const std::string& key : otherKeys)
+        if (r.has(key))
+            r.fail(t.get(key), "'" + key + "' in [[wall]] belongs to shape = \"" +
+                                   (w.cylinder ? "plane" : "cylinder") + "\"");
     if (!r.has("point")) r.fail(nullptr, "missing key 'point' in [[wall]]");
-    if (!r.has("normal")) r.fail(nullptr, "missing key 'normal' in [[wall]]");
     w.point = r.vector("point");
-    w.normal = r.vector("normal");
-    if (w.normal.isZero(0.0)) r.fail(t.get("normal"), "'normal' in [[wall]] must not be zero");
+    if (w.cylinder) {
+        if (!r.has("axis"))
+            r.fail(nullptr, "missing key 'axis' in [[wall]] (shape = \"cylinder\")");
+        w.axis = r.vector("axis");
+        if (w.axis.isZero(0.0)) r.fail(t.get("axis"), "'axis' in [[wall]] must not be zero");
+        w.radius = r.number("radius", 0.0, true, true);
+    } else {
+        if (!r.has("normal")) r.fail(nullptr, "missing key 'normal' in [[wall]]");
+        w.normal = r.vector("normal");
+        if (w.normal.isZero(0.0)) r.fail(t.get("normal"), "'normal' in [[wall]] must not be zero");
+    }
     if (r.has("velocity")) w.velocity = r.vector("velocity");
     w.friction = r.number("friction", 0.0, false, false);
     return w;
@@ -218,6 +241,14 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
     if (const toml::array* walls = arrayOfTables(file, root, "wall"))
         for (const toml::node& n : *walls)
             c.walls.push_back(readWall(file, *n.as_table(), c.walls.size()));
+    // Each wall has its own history.csv columns (wall_<name>_…).
+    for (std::size_t i = 0; i < c.walls.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (columnName(c.walls[i].name) == columnName(c.walls[j].name))
+                throw InputError(file + ":" + std::to_string(c.walls[i].line) + ": wall '" +
+                                 c.walls[i].name + "' has the history columns of wall '" +
+                                 c.walls[j].name + "' (line " + std::to_string(c.walls[j].line) +
+                                 "): give the walls names that differ in letters or digits");
 
     if (const toml::array* materials = arrayOfTables(file, root, "material"))
         for (const toml::node& n : *materials) {

@@ -31,11 +31,15 @@ struct SetSpec {
     int line = 0;
 };
 
-/// A rigid plane (libgsph/contact/walls.hpp); the normal points to the bodies' side.
+/// A rigid plane or cylinder (libgsph/contact/walls.hpp); a plane's normal points to the
+/// bodies' side, a cylinder's bodies are outside it.
 struct WallSpec {
     std::string name;
-    Vec3 point = Vec3::Zero();     ///< [m]
-    Vec3 normal = Vec3::UnitZ();   ///< non-zero (normalised by the library)
+    bool cylinder = false;         ///< shape = "cylinder" (else "plane")
+    Vec3 point = Vec3::Zero();     ///< a point of the plane or of the cylinder's axis [m]
+    Vec3 normal = Vec3::UnitZ();   ///< plane: non-zero (normalised by the library)
+    Vec3 axis = Vec3::UnitY();     ///< cylinder: non-zero (normalised by the library)
+    double radius = 0.0;           ///< cylinder: R > 0 [m]
     Vec3 velocity = Vec3::Zero();  ///< [m/s]
     double friction = 0.0;         ///< Coulomb μ
     int line = 0;

@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <stdexcept>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -38,35 +39,77 @@ const HistoryColumn kHistoryColumns[] = {
     {"momentum_z", "%.9e", [](const State&, const EnergyReport& e) { return e.momentum[2]; }},
 };
 
-std::string header() {
+struct WallColumn {
+    const char* suffix;  ///< the column is wall_<name>_<suffix>
+    const char* format;
+    double (*value)(const State&, const Wall&, const Vec3& force);
+};
+
+// Per wall, after the run's columns: the force it exerts on the bodies (normal push and
+// friction; the bodies push the wall with the opposite) and its displacement velocity·t.
+const WallColumn kWallColumns[] = {
+    {"fx", "%.9e", [](const State&, const Wall&, const Vec3& f) { return f[0]; }},
+    {"fy", "%.9e", [](const State&, const Wall&, const Vec3& f) { return f[1]; }},
+    {"fz", "%.9e", [](const State&, const Wall&, const Vec3& f) { return f[2]; }},
+    {"ux", "%.9e",
+     [](const State& s, const Wall& w, const Vec3&) { return s.time * w.velocity[0]; }},
+    {"uy", "%.9e",
+     [](const State& s, const Wall& w, const Vec3&) { return s.time * w.velocity[1]; }},
+    {"uz", "%.9e",
+     [](const State& s, const Wall& w, const Vec3&) { return s.time * w.velocity[2]; }},
+};
+
+}  // namespace
+
+std::string columnName(const std::string& wallName) {
+    std::string out = wallName;
+    for (char& c : out) {
+        const bool keep =
+            (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+        if (!keep) c = '_';
+    }
+    return out;
+}
+
+History::History(std::filesystem::path path, std::vector<Wall> walls)
+    : path_(std::move(path)), walls_(std::move(walls)), text_(header()) {}
+
+std::vector<std::string> History::columnNames() const {
+    std::vector<std::string> names;
+    for (const HistoryColumn& c : kHistoryColumns) names.emplace_back(c.name);
+    for (const Wall& w : walls_)
+        for (const WallColumn& c : kWallColumns)
+            names.push_back("wall_" + columnName(w.name) + "_" + c.suffix);
+    return names;
+}
+
+std::string History::header() const {
     std::string line;
-    for (const HistoryColumn& c : kHistoryColumns) {
+    for (const std::string& name : columnNames()) {
         if (!line.empty()) line.push_back(',');
-        line.append(c.name);
+        line.append(name);
     }
     line.push_back('\n');
     return line;
 }
 
-}  // namespace
-
-History::History(std::filesystem::path path) : path_(std::move(path)), text_(header()) {}
-
-std::vector<std::string> History::columnNames() {
-    std::vector<std::string> names;
-    for (const HistoryColumn& c : kHistoryColumns) names.emplace_back(c.name);
-    return names;
-}
-
-void History::add(const State& state, const EnergyReport& energy) {
+void History::add(const State& state, const EnergyReport& energy,
+                  const std::vector<Vec3>& wallForces) {
+    if (wallForces.size() != walls_.size())
+        throw std::logic_error("History::add: " + std::to_string(wallForces.size()) +
+                               " wall forces for " + std::to_string(walls_.size()) + " walls");
     bool first = true;
-    for (const HistoryColumn& c : kHistoryColumns) {
-        char cell[64];
-        std::snprintf(cell, sizeof cell, c.format, c.value(state, energy));
+    const auto cell = [&](const char* format, double value) {
+        char text[64];
+        std::snprintf(text, sizeof text, format, value);
         if (!first) text_ += ',';
-        text_ += cell;
+        text_ += text;
         first = false;
-    }
+    };
+    for (const HistoryColumn& c : kHistoryColumns) cell(c.format, c.value(state, energy));
+    for (std::size_t w = 0; w < walls_.size(); ++w)
+        for (const WallColumn& c : kWallColumns)
+            cell(c.format, c.value(state, walls_[w], wallForces[w]));
     text_ += '\n';
 }
 

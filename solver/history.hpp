@@ -1,37 +1,50 @@
 // SPDX-License-Identifier: MIT
-// history.csv of a run (docs/formats.md): one row per snapshot, the columns defined in one
-// list (kHistoryColumns in history.cpp) — adding a column is one line there and one line in
-// docs/formats.md. The whole table is rewritten atomically at every flush, and its text goes
-// into checkpoints so that a restarted run writes the same file as an uninterrupted one.
+// history.csv of a run (docs/formats.md): one row per snapshot, the columns defined in two
+// lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum) and kWallColumns
+// (repeated for every wall, named wall_<name>_<suffix>) — adding a column is one line there
+// and one line in docs/formats.md. The whole table is rewritten atomically at every flush, and
+// its text goes into checkpoints so that a restarted run writes the same file as an
+// uninterrupted one.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "contact/walls.hpp"
 #include "integrator/energy.hpp"
 #include "particles/state.hpp"
 
 namespace gsph::solver {
 
+/// A wall's name as it appears in column names: letters, digits and '_' kept, anything else
+/// (spaces, '-', non-ASCII bytes) replaced by '_'.
+std::string columnName(const std::string& wallName);
+
 class History {
   public:
-    explicit History(std::filesystem::path path);
+    /// `walls`: the run's walls, in order (their columns follow the run's).
+    History(std::filesystem::path path, std::vector<Wall> walls);
 
     /// The column names, in the file's order.
-    static std::vector<std::string> columnNames();
+    std::vector<std::string> columnNames() const;
 
-    void add(const State& state, const EnergyReport& energy);
+    /// A row; `wallForces`: per wall, its force on the bodies (RigidWalls::totalForces; empty
+    /// if the run has no walls).
+    void add(const State& state, const EnergyReport& energy, const std::vector<Vec3>& wallForces);
     /// Header and rows so far (what a checkpoint stores).
     const std::string& text() const { return text_; }
     /// Replaces the table by one a checkpoint stored. Throws InputError if its header is not
-    /// this build's.
+    /// this run's.
     void restore(const std::string& text, const std::string& source);
     /// Writes the table to the path, atomically. Throws IoError on failure.
     void flush() const;
 
   private:
+    std::string header() const;
+
     std::filesystem::path path_;
+    std::vector<Wall> walls_;
     std::string text_;
 };
 

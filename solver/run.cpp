@@ -138,6 +138,21 @@ std::string format(const char* fmt, double a, long b) {
     return line;
 }
 
+// The library's wall of a [[wall]] entry.
+Wall wallOf(const WallSpec& w) {
+    Wall out{w.name, w.point, w.normal, w.velocity, w.friction};
+    out.shape = w.cylinder ? WallShape::Cylinder : WallShape::Plane;
+    out.axis = w.axis;
+    out.radius = w.radius;
+    return out;
+}
+
+std::vector<Wall> wallsOf(const CaseConfig& c) {
+    std::vector<Wall> walls;
+    for (const WallSpec& w : c.walls) walls.push_back(wallOf(w));
+    return walls;
+}
+
 // The run folder's files and the schedule that says when they are written: snapshots,
 // history.csv, checkpoint.h5, run.log, and the progress bar between them.
 class RunOutputs {
@@ -150,7 +165,7 @@ class RunOutputs {
           ref_(ref),
           inputs_(std::move(inputs)),
           provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
-          history_(options.runDir / "history.csv"),
+          history_(options.runDir / "history.csv", wallsOf(c)),
           progress_(options.progress, c.endTime, ref.size()) {
         log_.beforePrint = [this] { progress_.clear(); };
     }
@@ -163,9 +178,11 @@ class RunOutputs {
     std::filesystem::path checkpointPath() const { return options_.runDir / kCheckpointName; }
     int snapshotsWritten() const { return snapshots_; }
 
-    /// A history row and a snapshot of `s` (a scheduled one, or the last of a stopped run).
-    void snapshot(const State& s, const EnergyReport& energy) {
-        history_.add(s, energy);
+    /// A history row and a snapshot of the simulation's state (a scheduled one, or the last
+    /// of a stopped run).
+    void snapshot(const Simulation& sim) {
+        const State& s = sim.state();
+        history_.add(s, sim.energy(), sim.wallForces());
         writeSnapshotOnly(s);
     }
     /// A snapshot without a history row (the failing state of a numerical breakdown).
@@ -251,8 +268,7 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
                                             std::move(bodies.materials), solverOptions);
     for (VelocityConstraint& vc : sets.constraints) sim->constrain(std::move(vc));
     for (SetForce& f : sets.forces) sim->applyForce(std::move(f));
-    for (const WallSpec& w : c.walls)
-        sim->addWall({w.name, w.point, w.normal, w.velocity, w.friction});
+    for (const WallSpec& w : c.walls) sim->addWall(wallOf(w));
     sim->setGravity(c.gravity);
     return sim;
 }
@@ -340,7 +356,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                 100.0 * initialEnergy.contactEnergy / std::max(initialEnergy.kinetic, 1e-300));
             options.log->add(line);
         }
-        out.snapshot(sim.state(), initialEnergy);
+        out.snapshot(sim);
     }
 
     RunSummary summary;
@@ -369,12 +385,12 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                 // Stopped: the checkpoint resumes this interval; the snapshot shows the state
                 // (the restarted run rewrites its number with the scheduled snapshot).
                 out.checkpoint(sim.state());
-                out.snapshot(sim.state(), sim.energy());
+                out.snapshot(sim);
                 summary.interrupted = true;
                 summary.checkpoint = out.checkpointPath();
                 break;
             }
-            out.snapshot(sim.state(), sim.energy());
+            out.snapshot(sim);
         }
     } catch (const NumericalError& e) {
         out.writeSnapshotOnly(sim.state());

@@ -1,14 +1,21 @@
 // SPDX-License-Identifier: MIT
-// Rigid planar walls (issue #6; docs/theory.md "Walls"). A wall is the infinite plane through
-// p(t) = point + velocity·t with unit normal n pointing into the bodies' side. A particle
-// penetrates by g_a = ρ_a(n) − (x_a − p(t))·n (ρ_a(n) its contact ellipsoid's radius along n,
-// penalty_contact.hpp: half its cell's width across the wall) and, when g_a > 0, feels
-//   normal:  f_n = k_a g_a n                      (k_a of contactStiffness, U = ½ k_a g_a²)
-//   Coulomb: f_t = −min(μ |f_n|, m_a |w_t|/Δt) w_t/|w_t|,  w_t the tangential part of v_a − v_wall,
+// Rigid walls (issue #6; docs/theory.md "Walls"): planes and cylinders in rigid translation,
+// p(t) = point + velocity·t. A particle a at x_a penetrates a wall by
+//   plane    (unit normal n towards the bodies):  g_a = ρ_a(n) − (x_a − p)·n,
+//   cylinder (unit axis e through p, radius R):   g_a = ρ_a(n) − (r_a − R),
+//            q = x_a − p, r_a = |q − (q·e)e|, n = (q − (q·e)e)/r_a the outward radial direction
+// (ρ_a(n) its contact ellipsoid's radius along n, penalty_contact.hpp) and, when g_a > 0, feels
+//   normal:  f_n = −∂U/∂x_a,  U = ½ k_a g_a²      (k_a of contactStiffness)
+//            plane: k_a g_a n;  cylinder: k_a g_a (n + P h/r_a), h = S^T S n/|S n|³,
+//            P = I − nnᵀ − eeᵀ (ρ_a(n) turns with n around the cylinder; as in the pair contact)
+//   Coulomb: f_t = −min(μ k_a g_a, m_a |w_t|/Δt) w_t/|w_t|,  w_t the part of v_a − v_wall
+//            tangential to the wall at the particle (normal n),
 // the min being the stick limit: friction never reverses the sliding within a step. The power
 // the wall puts into the bodies, f_n·v_wall + f_t·v_a (its push, and the friction, negative
-// for a wall at rest), is booked as external work; the normal spring's energy as contact energy.
-// Each particle writes only its own entries (parallel, thread-count-independent).
+// for a wall at rest), is booked as external work; the normal spring's energy as contact energy
+// (U is a potential in the wall's frame, so dU/dt = −f_n·(v_a − v_wall)).
+// Each particle writes only its own entries (parallel, thread-count-independent); the force
+// of each wall on the bodies is summed in a fixed order.
 #pragma once
 
 #include <string>
@@ -20,15 +27,20 @@
 
 namespace gsph {
 
+enum class WallShape { Plane, Cylinder };
+
 struct Wall {
-    std::string name;  ///< for messages
-    Vec3 point = Vec3::Zero();
-    Vec3 normal = Vec3::UnitZ();   ///< normalised by RigidWalls; points to the bodies' side
+    std::string name;              ///< for messages and output columns
+    Vec3 point = Vec3::Zero();     ///< a point of the plane, or of the cylinder's axis [m]
+    Vec3 normal = Vec3::UnitZ();   ///< plane: normalised by RigidWalls; points to the bodies' side
     Vec3 velocity = Vec3::Zero();  ///< rigid translation of the wall [m/s]
     double friction = 0.0;         ///< Coulomb coefficient μ ≥ 0
+    WallShape shape = WallShape::Plane;
+    Vec3 axis = Vec3::UnitY();  ///< cylinder: direction of its axis (normalised by RigidWalls)
+    double radius = 0.0;        ///< cylinder: R > 0 [m]; the bodies are outside it
 };
 
-/// What the walls did at the last evaluation, per particle and in total.
+/// What the walls did at the last evaluation, in total.
 struct WallResult {
     double energy = 0.0;     ///< Σ ½ k g² [J]
     double pushPower = 0.0;  ///< Σ f_n·v_wall [W] (friction's power needs v, the caller's)
@@ -37,8 +49,8 @@ struct WallResult {
 class RigidWalls {
   public:
     RigidWalls() = default;
-    /// Throws InputError on a zero normal or μ < 0. `stiffness`: k_a; `shapes`: the contact
-    /// ellipsoids (contactShapes).
+    /// Throws InputError on a zero normal or axis, a radius ≤ 0 or μ < 0. `stiffness`: k_a;
+    /// `shapes`: the contact ellipsoids (contactShapes).
     RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vector<double> stiffness,
                const ContactShapes& shapes);
 
@@ -53,12 +65,20 @@ class RigidWalls {
                          std::vector<Vec3>& friction, std::vector<double>& frequency2,
                          std::vector<Vec3>& wallForce);
 
+    /// Per wall, the total force (normal and friction) it exerted on the bodies at the last
+    /// addForces [N] (zero before the first); the reaction on the wall is its opposite.
+    const std::vector<Vec3>& totalForces() const { return totals_; }
+
   private:
     const Reference* ref_ = nullptr;
     std::vector<Wall> walls_;
     std::vector<double> stiffness_;
-    std::vector<double> radius_;  ///< ρ_a(n_w), particle-major: radius_[a · walls + w]
+    std::vector<double> radius_;  ///< planes: ρ_a(n_w), particle-major: radius_[a · walls + w]
+    std::vector<Mat3> S_;         ///< the ellipsoids' S_a (kept only when a cylinder needs them)
+    std::vector<Vec3> perWall_;   ///< force of wall w on a: perWall_[a · walls + w]
+    std::vector<Vec3> totals_;    ///< per wall: Σ_a perWall_
     std::vector<double> energy_, pushPower_, partial_;  ///< per particle scratch
+    std::vector<Vec3> partialVec_;                      ///< scratch of the per-wall sums
 };
 
 }  // namespace gsph

@@ -104,6 +104,7 @@ class VelocityVerlet {
     const PhaseTimes& phaseTimes() const { return times_; }
     const BrittleBonds& bonds() const { return bonds_; }
     const PenaltyContact& contact() const { return pairContact_; }
+    const RigidWalls& walls() const { return walls_; }
 
   private:
     void updateKinematicsAndStress(State& state, double dt, bool atRest);

@@ -73,6 +73,11 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"wall_negative_friction.toml", "'friction' in [[wall]] must be ≥ 0", 18},
         {"wall_missing_point.toml", "missing key 'point' in [[wall]]", 15},
         {"wall_unknown_key.toml", "unknown key 'mu' in [[wall]]", 18},
+        {"wall_cylinder_missing_radius.toml", "missing key 'radius' in [[wall]]", 15},
+        {"wall_cylinder_with_normal.toml", "'normal' in [[wall]] belongs to shape = \"plane\"", 19},
+        {"wall_unknown_shape.toml", "'shape' in [[wall]] must be \"plane\" or \"cylinder\"", 17},
+        {"wall_same_columns.toml",
+         "wall 'left-roller' has the history columns of wall 'left roller'", 20},
         {"set_force_and_fixed.toml", "set 'load' has a 'force' and a kinematic condition", 18},
         {"contact_negative_penalty.toml", "'penalty' in [contact] must be > 0", 16},
         {"contact_unknown_key.toml", "unknown key 'stiffness' in [contact]", 16},
@@ -225,6 +230,69 @@ TEST(SolveCli, TaylorBarIsBitIdenticalOnOneAndTwoThreads) {
     int compared = 0;
     EXPECT_EQ(test::differingDatasets(one, two, &compared), "");
     EXPECT_GT(compared, 10);
+}
+
+// The per-wall columns of history.csv: the graded bar (M = 0.0785 kg) laid on a floor under
+// g = 2e4 m/s² rings on its contact springs; the floor's force column integrated over the rows
+// (trapezoid) is the momentum it gave, Δp_y + M g T, and on average it carries M g. A second wall,
+// far away and moving, has zero force and displacement velocity·t; its name is sanitised.
+TEST(SolveCli, HistoryHasEachWallsForceAndDisplacement) {
+    TempDir dir;
+    makeParticles(dir);
+    const fs::path casePath = dir / "floor.toml";
+    {
+        std::ofstream out(casePath);
+        out << "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 2.0e-7\n"
+               "gravity = [0.0, -2.0e4, 0.0]\n"
+               "[[material]]\nname = \"steel\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
+               "poisson_ratio = 0.3\n"
+               "[[body]]\ngroup = \"bar\"\nmaterial = \"steel\"\n"
+               "[[wall]]\nname = \"floor\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n"
+               "[[wall]]\nname = \"far wall-2\"\nshape = \"cylinder\"\npoint = [0.0, 0.0, 1.0]\n"
+               "axis = [1.0, 0.0, 0.0]\nradius = 0.1\nvelocity = [0.0, 0.5, 2.0]\n";
+    }
+    const fs::path run = dir / "run";
+    const auto r = runCommand(kSolve + " " + casePath.string() + " -o " + run.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(run / "history.csv", header);
+    ASSERT_EQ(header.size(), 15u + 2 * 6);
+    const std::vector<std::string> floor = {"wall_floor_fx", "wall_floor_fy", "wall_floor_fz",
+                                            "wall_floor_ux", "wall_floor_uy", "wall_floor_uz"};
+    EXPECT_EQ(std::vector<std::string>(header.begin() + 15, header.begin() + 21), floor);
+    EXPECT_EQ(header[21], "wall_far_wall_2_fx");
+    EXPECT_EQ(header.back(), "wall_far_wall_2_uz");
+    const auto col = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    const double mass = 7850.0 * 0.1 * 0.01 * 0.01, g = 2.0e4;
+    double impulse = 0.0, mean = 0.0;
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        const double dt = rows[k][col("time")] - rows[k - 1][col("time")];
+        impulse += 0.5 * dt * (rows[k][col("wall_floor_fy")] + rows[k - 1][col("wall_floor_fy")]);
+    }
+    const double duration = rows.back()[col("time")];
+    const double gained = rows.back()[col("momentum_y")] - rows.front()[col("momentum_y")];
+    for (std::size_t k = rows.size() / 2; k < rows.size(); ++k)
+        mean += rows[k][col("wall_floor_fy")];
+    mean /= static_cast<double>(rows.size() - rows.size() / 2);
+    std::printf(
+        "[floor column] ∫F dt %.6e, Δp + M g T %.6e; mean force (second half) %.2f N, "
+        "M g %.2f N\n",
+        impulse, gained + mass * g * duration, mean, mass * g);
+    EXPECT_NEAR(impulse, gained + mass * g * duration, 0.01 * mass * g * duration);
+    // Resting (Δp ≈ 0): the floor carried the weight on average (the mean of the ringing
+    // samples themselves is a few % off; their integral is not).
+    EXPECT_NEAR(impulse / duration, mass * g, 0.02 * mass * g);
+    for (const auto& row : rows) {
+        EXPECT_EQ(row[col("wall_floor_fx")], 0.0);
+        EXPECT_EQ(row[col("wall_floor_uy")], 0.0);
+        EXPECT_EQ(row[col("wall_far_wall_2_fz")], 0.0);
+        EXPECT_NEAR(row[col("wall_far_wall_2_uy")], 0.5 * row[col("time")], 1e-15);
+        EXPECT_NEAR(row[col("wall_far_wall_2_uz")], 2.0 * row[col("time")], 1e-15);
+    }
 }
 
 }  // namespace

@@ -136,6 +136,29 @@ TEST(Geometries, BendingPlate) {
     for (Index a : f.sets.at("support_left")) EXPECT_EQ(f.latticeIndex[a][2], 0);
 }
 
+// Both layouts of the three-point bending case: cells 3:1 (GSPH) and cubic (aspect = 1), the
+// same thickness spacing, 9× the particles; a particle column under the indenter (x = 0) and
+// over each support (x = ±10 mm) in both.
+TEST(Geometries, ThreePointBendingLayouts) {
+    const std::string path = geometry("three_point_bending.geo");
+    for (const double aspect : {3.0, 1.0}) {
+        const Conversion c = convert(path, {{"aspect", aspect}});
+        if (aspect == 3.0) expectMatchesGmsh(path, c);
+        const ParticleFile& f = c.particles;
+        ASSERT_EQ(f.spaces.size(), 1u);
+        const std::array<int, 3> cells =
+            aspect == 3.0 ? std::array<int, 3>{31, 3, 6} : std::array<int, 3>{93, 9, 6};
+        EXPECT_EQ(f.spaces[0].cells, cells) << "aspect " << aspect;
+        EXPECT_NEAR(totalVolume(f), 0.031 * 0.003 * 0.002, 1e-10 * 1.86e-7);
+        EXPECT_EQ(f.bodies.at(0).name, "plate");
+        for (const double x : {-0.01, 0.0, 0.01}) {
+            int column = 0;
+            for (const Vec3& X : f.X) column += std::abs(X[0] - x) < 1e-9;
+            EXPECT_EQ(column, cells[1] * cells[2]) << "x = " << x << ", aspect " << aspect;
+        }
+    }
+}
+
 TEST(Geometries, QuarterCylinder) {
     const std::string path = geometry("quarter_cylinder.geo");
     const Conversion c = convert(path);
