@@ -98,21 +98,18 @@ def measure(particles_h5, snapshot_h5, layout=None):
         "at_z": x[widest, 2] - bottom,
         "bottom": bottom,
         "z": x[:, 2] - bottom,
+        "reach_z": reach_z,
         "reach_r": reach_r,
     }
 
 
-def outline(m, bins=60):
-    """Largest radial reach in slices along z: the bar's profile (z, r)."""
-    z, r = m["z"], m["reach_r"]
-    edges = np.linspace(0.0, m["length"], bins + 1)
-    zs, rs = [], []
-    for a, b in zip(edges[:-1], edges[1:]):
-        sel = (z >= a) & (z < b)
-        if np.any(sel):
-            zs.append(0.5 * (a + b))
-            rs.append(r[sel].max())
-    return np.array(zs), np.array(rs)
+def outline(m, points=200):
+    """The bar's profile (z, r): at each height, the largest radial reach of the cells that
+    span it (a cell spans z_a ± its reach along z)."""
+    z, dz, r = m["z"], m["reach_z"], m["reach_r"]
+    zs = np.linspace(0.0, m["length"], points)
+    rs = np.array([r[np.abs(z - zc) <= dz].max(initial=0.0) for zc in zs])
+    return zs[rs > 0], rs[rs > 0]
 
 
 if __name__ == "__main__":
