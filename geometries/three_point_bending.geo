@@ -1,6 +1,7 @@
 // Thin plate (a narrow strip) for three-point bending (cases/three_point_bending/case.toml):
-// one structured hex block, graded along x — cubic cells under the indenter and over the
-// supports, cells `aspect` times longer in between — with uniform layers through the thickness.
+// one structured hex block (an extrusion along x), graded along x — cubic cells under the
+// indenter and over the supports, up to `aspect` times longer in between — with uniform layers
+// through the thickness.
 //
 //   gsph-preproc three_point_bending.geo -o gsph.h5                  (GSPH layout, graded)
 //   gsph-preproc three_point_bending.geo -o uniform.h5 --set aspect=1 (uniform: cubic cells)
@@ -13,14 +14,16 @@
 // h = T/nz (uniform layers also keep the smallest spacing — which sets the stable step — at
 // T/nz). Along the span the moment is linear and the plate needs few particles, except where
 // it touches a cylinder: under the indenter the plastic hinge forms and the plate then wraps
-// the cylinder, and a contact that steps from one particle column to the next makes the force
-// jump. So the cells are h long in |x| < band (the hinge and the wrapped arc, δ ≤ T) and
-// `support` long within support_band of x = ±S/2, `aspect`·h elsewhere, the cell length
-// changing by at most the factor `ratio` between neighbours (a steeper change chatters). Across
-// the width (bending about y: nothing varies along y) the cells are aspect·h wide.
-// Defaults: 6 layers of 1/3 mm, 3 across, 55 along x (17 under the indenter): 990 particles;
-// aspect = 1 gives the uniform layout of cubic 1/3 mm cells, 93 × 9 × 6 = 5022 (5.1×).
-// A particle column sits under the indenter (x = 0; an odd count of cells in the band).
+// the cylinder, and over the supports it bends round them; a contact that steps from one
+// particle column to the next makes the force jump by the column's share. So the cells are h
+// long in |x| < band (the hinge and the arc wrapped by δ = T) and `support`·h long within
+// support_band of x = ±S/2, `aspect`·h elsewhere, the cell length changing by at most the
+// factor `ratio` between neighbours (a steeper change, or a gmsh Bump, chatters); the graded
+// part is then stretched by ≤ 3 % to fit L. Across the width (nothing varies along y) the
+// cells are `across`·h wide (4 across, across = 2.25, did worse than 3: docs/theory.md).
+// Defaults: 6 layers of 1/3 mm, 3 across, 67 along x (21 under the indenter, 7 over each
+// support): 1206 particles; aspect = 1 gives the uniform layout of cubic 1/3 mm cells,
+// 93 × 9 × 6 = 5022 (4.2×). A particle column sits under the indenter (an odd band).
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m). Body: Physical Volume "plate".
 
@@ -30,19 +33,20 @@ DefineConstant[
   T = {0.002, Name "Parameters/T"},                // thickness along z [m]
   S = {0.02, Name "Parameters/S"},                 // span: supports at x = ±S/2 [m]
   nz = {6, Name "Parameters/nz"},                  // cells through the thickness
-  aspect = {3, Name "Parameters/aspect"},          // coarse cell length (and width) / (T/nz)
-  band = {0.0029, Name "Parameters/band"},         // half-width of the cubic cells at x = 0 [m]
-  support = {1.5, Name "Parameters/support"},      // cell length / (T/nz) at the supports
+  aspect = {3, Name "Parameters/aspect"},          // coarse cell length / (T/nz); 1: uniform
+  band = {0.0035, Name "Parameters/band"},         // half-width of the cubic cells at x = 0 [m]
+  support = {1, Name "Parameters/support"},        // cell length / (T/nz) at the supports
   support_band = {0.001, Name "Parameters/support_band"},  // half-width of that zone [m]
+  across = {3, Name "Parameters/across"},          // cell width / (T/nz) (at most aspect)
   ratio = {1.25, Name "Parameters/ratio"},         // largest length ratio of neighbouring cells
-  refine = {1, Name "Parameters/refine"}           // multiplies every cell count (convergence studies)
+  refine = {1, Name "Parameters/refine"}           // divides h (the ramps keep their ratio)
 ];
 
 h = T / (nz * refine);               // layer thickness = the finest cell length [m]
 h_coarse = aspect * h;
 h_support = Min(support * h, h_coarse);
 slope = ratio - 1;                   // d(cell length)/dx of the ramps: ratio between neighbours
-ny = Round(W / h_coarse);
+ny = Round(W / (Min(across, aspect) * h));
 If (ny < 1)
   ny = 1;
 EndIf
@@ -101,7 +105,7 @@ Point(3) = {-L/2, W/2, T};   Point(4) = {-L/2, -W/2, T};
 Line(1) = {1, 2};  Line(2) = {2, 3};  Line(3) = {3, 4};  Line(4) = {4, 1};
 Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
-Transfinite Curve{1, 3} = ny * refine + 1;
+Transfinite Curve{1, 3} = ny + 1;  // (h, hence ny, includes refine)
 Transfinite Curve{2, 4} = nz * refine + 1;
 Transfinite Surface{1};
 Recombine Surface{1};
