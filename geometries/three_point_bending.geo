@@ -19,8 +19,8 @@
 // long in |x| < band (the hinge and the arc wrapped by δ = T) and `support`·h long within
 // support_band of x = ±S/2, `aspect`·h elsewhere, the cell length changing by at most the
 // factor `ratio` between neighbours (a steeper change, or a gmsh Bump, chatters); the graded
-// part is then stretched or shrunk (by 2 % here) to fit L. Across the width (nothing varies along y) the
-// cells are `across`·h wide (4 across, across = 2.25, did worse than 3: docs/theory.md).
+// part is then stretched or shrunk (by 2 % here) to fit L. Across the width (nothing varies
+// along y) the cells are `across`·h wide (4 across, across = 2.25, did worse: docs/theory.md).
 // Defaults: 6 layers of 1/3 mm, 3 across, 67 along x (21 under the indenter, 7 over each
 // support): 1206 particles; aspect = 1 gives the uniform layout of cubic 1/3 mm cells,
 // 93 × 9 × 6 = 5022 (4.2×). A particle column sits under the indenter (an odd band).
