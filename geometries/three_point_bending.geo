@@ -64,8 +64,8 @@ For k In {0:1000}
     x = edge[n];
     // The size field at the cell's left edge, then no more than the field at its right edge
     // (twice: a fixed point), so that a cell before a finer zone is not too long either.
-    size_left = Min(h_coarse, Min(h + slope * (x - edge[nband]),
-                                  Max(h_support, h_support + slope * (Fabs(x - S / 2) - support_band))));
+    ramp_support = h_support + slope * (Fabs(x - S / 2) - support_band);
+    size_left = Min(h_coarse, Min(h + slope * (x - edge[nband]), Max(h_support, ramp_support)));
     size = size_left;
     For pass In {1:2}
       xr = x + size;
