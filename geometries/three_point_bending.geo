@@ -1,63 +1,114 @@
 // Thin plate (a narrow strip) for three-point bending (cases/three_point_bending/case.toml):
-// one structured hex block, cells anisotropic — fine through the thickness, coarse in-plane.
+// one structured hex block (an extrusion along x), graded along x — cubic cells under the
+// indenter and over the supports, up to `aspect` times longer in between — with uniform layers
+// through the thickness.
 //
-//   gsph-preproc three_point_bending.geo -o gsph.h5                  (GSPH layout: cells 3:1)
+//   gsph-preproc three_point_bending.geo -o gsph.h5                  (GSPH layout, graded)
 //   gsph-preproc three_point_bending.geo -o uniform.h5 --set aspect=1 (uniform: cubic cells)
 //   gmsh -3 three_point_bending.geo                                   -> three_point_bending.msh
 //
 // The plate spans x in [-L/2, L/2], y in [-W/2, W/2], z in [0, T]; it bends about y over
 // supports at x = ±S/2 under its bottom face (the case's cylinders; the plate needs no sets).
-// Why anisotropic cells, not a grading towards the faces: in bending the stress varies through
-// the thickness (linearly while elastic, then an elastic core between plastic layers) and only
-// slowly along the span (the moment is linear in x), so the thickness needs the particles and
-// the plane does not. Uniform thin layers keep the smallest spacing — which sets the stable
-// step — at T/nz; a grading towards the faces would shrink it and lengthen every run.
-// Defaults: nz = 6 cells of T/6 through the thickness, in-plane cells aspect × T/nz = 1 mm
-// (31 × 3 × 6 = 558 particles); aspect = 1 gives cubic cells of the same thickness spacing
-// (93 × 9 × 6 = 5022 particles, 9×). L = 31 mm and an odd cell count put a particle column
-// under the indenter (x = 0) and over each support (x = ±10 mm) in both layouts.
+// Why this layout: in bending the stress varies through the thickness (linearly while elastic,
+// then an elastic core between plastic layers), so every section keeps nz uniform layers of
+// h = T/nz (uniform layers also keep the smallest spacing — which sets the stable step — at
+// T/nz). Along the span the moment is linear and the plate needs few particles, except where
+// it touches a cylinder: under the indenter the plastic hinge forms and the plate then wraps
+// the cylinder, and over the supports it bends round them; a contact that steps from one
+// particle column to the next makes the force jump by the column's share. So the cells are h
+// long in |x| < band (the hinge and the arc wrapped by δ = T) and `support`·h long within
+// support_band of x = ±S/2, `aspect`·h elsewhere, the cell length changing by at most the
+// factor `ratio` between neighbours (a steeper change, or a gmsh Bump, chatters); the graded
+// part is then stretched or shrunk (by 2 % here) to fit L. Across the width (nothing varies
+// along y) the cells are `across`·h wide (4 across, across = 2.25, did worse: docs/theory.md).
+// Defaults: 6 layers of 1/3 mm, 3 across, 67 along x (21 under the indenter, 7 over each
+// support): 1206 particles; aspect = 1 gives the uniform layout of cubic 1/3 mm cells,
+// 93 × 9 × 6 = 5022 (4.2×). A particle column sits under the indenter (an odd band).
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m). Body: Physical Volume "plate".
 
 DefineConstant[
-  L = {0.031, Name "Parameters/L"},        // length along x [m] (span S = 0.02 + overhangs)
-  W = {0.003, Name "Parameters/W"},        // width along y [m]
-  T = {0.002, Name "Parameters/T"},        // thickness along z [m]
-  nz = {6, Name "Parameters/nz"},          // cells through the thickness
-  aspect = {3, Name "Parameters/aspect"},  // in-plane cell size / thickness spacing T/nz
-  refine = {1, Name "Parameters/refine"}   // multiplies every cell count (convergence studies)
+  L = {0.031, Name "Parameters/L"},                // length along x [m]
+  W = {0.003, Name "Parameters/W"},                // width along y [m]
+  T = {0.002, Name "Parameters/T"},                // thickness along z [m]
+  S = {0.02, Name "Parameters/S"},                 // span: supports at x = ±S/2 [m]
+  nz = {6, Name "Parameters/nz"},                  // cells through the thickness
+  aspect = {3, Name "Parameters/aspect"},          // coarse cell length / (T/nz); 1: uniform
+  band = {0.0035, Name "Parameters/band"},         // half-width of the cubic cells at x = 0 [m]
+  support = {1, Name "Parameters/support"},        // cell length / (T/nz) at the supports
+  support_band = {0.001, Name "Parameters/support_band"},  // half-width of that zone [m]
+  across = {3, Name "Parameters/across"},          // cell width / (T/nz) (at most aspect)
+  ratio = {1.25, Name "Parameters/ratio"},         // largest length ratio of neighbouring cells
+  refine = {1, Name "Parameters/refine"}           // divides h (the ramps keep their ratio)
 ];
 
-h = aspect * T / nz;  // in-plane cell size [m]
-nx = Round(L / h);
-ny = Round(W / h);
+h = T / (nz * refine);               // layer thickness = the finest cell length [m]
+h_coarse = aspect * h;
+h_support = Min(support * h, h_coarse);
+slope = ratio - 1;                   // d(cell length)/dx of the ramps: ratio between neighbours
+ny = Round(W / (Min(across, aspect) * h));
 If (ny < 1)
   ny = 1;
 EndIf
 
-Point(1) = {-L/2, -W/2, 0};  Point(2) = {L/2, -W/2, 0};
-Point(3) = {L/2, W/2, 0};    Point(4) = {-L/2, W/2, 0};
-Point(5) = {-L/2, -W/2, T};  Point(6) = {L/2, -W/2, T};
-Point(7) = {L/2, W/2, T};    Point(8) = {-L/2, W/2, T};
+// Cell edges along x >= 0, marched from the centre cell [-h/2, h/2] and the band: the size
+// field is min(coarse, indenter ramp, support ramp), the ramps of slope ratio − 1.
+nband = Round((band - h / 2) / h);  // cells of length h right of the centre cell
+edge[0] = h / 2;
+For k In {1:nband}
+  edge[k] = h / 2 + k * h;
+EndFor
+n = nband;
+For k In {0:1000}
+  If (edge[n] < L / 2 - 1e-9 * L)
+    x = edge[n];
+    // The size field at the cell's left edge, then no more than the field at its right edge
+    // (twice: a fixed point), so that a cell before a finer zone is not too long either.
+    ramp_support = h_support + slope * (Fabs(x - S / 2) - support_band);
+    size_left = Min(h_coarse, Min(h + slope * (x - edge[nband]), Max(h_support, ramp_support)));
+    size = size_left;
+    For pass In {1:2}
+      xr = x + size;
+      size = Min(size_left, Min(h_coarse, Min(h + slope * (xr - edge[nband]),
+                 Max(h_support, h_support + slope * (Fabs(xr - S / 2) - support_band)))));
+    EndFor
+    edge[n + 1] = x + size;
+    n = n + 1;
+  EndIf
+EndFor
+If (n > nband + 1 && L / 2 - edge[n - 1] < edge[n] - L / 2)
+  n = n - 1;  // the nearer of the last two edges meets the end
+EndIf
+// Stretch (or shrink) the graded part to end at L/2 exactly; the band is kept.
+stretch = (L / 2 - edge[nband]) / (edge[n] - edge[nband]);
+For k In {nband + 1:n}
+  edge[k] = edge[nband] + (edge[k] - edge[nband]) * stretch;
+EndFor
+// Extrusion heights (each layer's far edge, from x = -L/2, normalised by L): the mirrored
+// edges, then the edges.
+m = 0;
+For k In {n - 1:0:-1}
+  one[m] = 1;
+  height[m] = (L / 2 - edge[k]) / L;
+  m = m + 1;
+EndFor
+For k In {0:n}
+  one[m] = 1;
+  height[m] = (L / 2 + edge[k]) / L;
+  m = m + 1;
+EndFor
+height[m - 1] = 1;
 
-Line(1) = {1, 2};  Line(2) = {4, 3};  Line(3) = {5, 6};  Line(4) = {8, 7};  // along x
-Line(5) = {1, 4};  Line(6) = {2, 3};  Line(7) = {5, 8};  Line(8) = {6, 7};  // along y
-Line(9) = {1, 5};  Line(10) = {2, 6}; Line(11) = {3, 7}; Line(12) = {4, 8}; // along z
+// The end section x = -L/2 (ny × nz structured), extruded along x through the layers above.
+Point(1) = {-L/2, -W/2, 0};  Point(2) = {-L/2, W/2, 0};
+Point(3) = {-L/2, W/2, T};   Point(4) = {-L/2, -W/2, T};
+Line(1) = {1, 2};  Line(2) = {2, 3};  Line(3) = {3, 4};  Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = ny + 1;  // (h, hence ny, includes refine)
+Transfinite Curve{2, 4} = nz * refine + 1;
+Transfinite Surface{1};
+Recombine Surface{1};
+Extrude {L, 0, 0} { Surface{1}; Layers{one[], height[]}; Recombine; }
 
-Curve Loop(1) = {1, 6, -2, -5};   Plane Surface(1) = {1};  // z = 0 (on the supports)
-Curve Loop(2) = {3, 8, -4, -7};   Plane Surface(2) = {2};  // z = T (under the indenter)
-Curve Loop(3) = {1, 10, -3, -9};  Plane Surface(3) = {3};  // y = -W/2
-Curve Loop(4) = {2, 11, -4, -12}; Plane Surface(4) = {4};  // y = W/2
-Curve Loop(5) = {5, 12, -7, -9};  Plane Surface(5) = {5};  // x = -L/2
-Curve Loop(6) = {6, 11, -8, -10}; Plane Surface(6) = {6};  // x = L/2
-Surface Loop(1) = {1, 2, 3, 4, 5, 6};
-Volume(1) = {1};
-
-Transfinite Curve{1, 2, 3, 4} = nx * refine + 1;
-Transfinite Curve{5, 6, 7, 8} = ny * refine + 1;
-Transfinite Curve{9, 10, 11, 12} = nz * refine + 1;
-Transfinite Surface{1:6};
-Recombine Surface{1:6};
-Transfinite Volume{1};
-
-Physical Volume("plate") = {1};
+Physical Volume("plate") = Volume{:};

@@ -140,21 +140,56 @@ TEST(Geometries, BendingPlate) {
 // same thickness spacing, 9× the particles; a particle column under the indenter (x = 0) and
 // over each support (x = ±10 mm) in both.
 TEST(Geometries, ThreePointBendingLayouts) {
+    // GSPH: graded along x (cubic 1/3 mm cells in |x| < 3.5 mm and within 1 mm of the supports,
+    // up to 1 mm between and at the ends, neighbours within the ratio 1.25 but for the ≤ 3 %
+    // fit of the graded part to the length); uniform (aspect = 1): cubic 1/3 mm cells, ≥ 4× the
+    // particles.
     const std::string path = geometry("three_point_bending.geo");
+    const double h = 0.002 / 6.0;
+    Index gsphParticles = 0;
     for (const double aspect : {3.0, 1.0}) {
         const Conversion c = convert(path, {{"aspect", aspect}});
         if (aspect == 3.0) expectMatchesGmsh(path, c);
         const ParticleFile& f = c.particles;
         ASSERT_EQ(f.spaces.size(), 1u);
         const std::array<int, 3> cells =
-            aspect == 3.0 ? std::array<int, 3>{31, 3, 6} : std::array<int, 3>{93, 9, 6};
+            aspect == 3.0 ? std::array<int, 3>{67, 3, 6} : std::array<int, 3>{93, 9, 6};
         EXPECT_EQ(f.spaces[0].cells, cells) << "aspect " << aspect;
         EXPECT_NEAR(totalVolume(f), 0.031 * 0.003 * 0.002, 1e-10 * 1.86e-7);
         EXPECT_EQ(f.bodies.at(0).name, "plate");
-        for (const double x : {-0.01, 0.0, 0.01}) {
-            int column = 0;
-            for (const Vec3& X : f.X) column += std::abs(X[0] - x) < 1e-9;
-            EXPECT_EQ(column, cells[1] * cells[2]) << "x = " << x << ", aspect " << aspect;
+        if (aspect == 3.0)
+            gsphParticles = f.size();
+        else
+            EXPECT_GE(f.size(), 4 * gsphParticles) << "the uniform layout has >= 4x the particles";
+
+        // Column centres along x: one at x = 0, mirror-symmetric, cell lengths (twice the
+        // distance of a centre to its cell's edge) h in the band, between h and aspect·h.
+        std::set<double> columns;
+        for (const Vec3& X : f.X) columns.insert(std::round(X[0] * 1e12) / 1e12);
+        ASSERT_EQ(columns.size(), static_cast<std::size_t>(cells[0])) << "aspect " << aspect;
+        const std::vector<double> x(columns.begin(), columns.end());
+        EXPECT_NEAR(x[x.size() / 2], 0.0, 1e-12);
+        for (std::size_t i = 0; i < x.size(); ++i) EXPECT_NEAR(x[i], -x[x.size() - 1 - i], 1e-9);
+        double edge = -0.0155;
+        std::vector<double> length;
+        for (const double centre : x) {
+            length.push_back(2.0 * (centre - edge));
+            edge += length.back();
+        }
+        EXPECT_NEAR(edge, 0.0155, 1e-9) << "the cells tile the length";
+        for (std::size_t i = 0; i < x.size(); ++i) {
+            EXPECT_GE(length[i], h * 0.97) << "column " << i << ", aspect " << aspect;
+            EXPECT_LE(length[i], aspect * h * 1.05) << "column " << i << ", aspect " << aspect;
+            if (std::abs(std::abs(x[i]) - 0.01) < 0.0008) {
+                EXPECT_LE(length[i], h * (1 + 1e-6)) << "over a support: x = " << x[i];
+            }
+            if (std::abs(x[i]) < 0.0034) {
+                EXPECT_NEAR(length[i], h, 1e-10) << "x = " << x[i];
+            }
+            if (i > 0) {
+                const double r = std::max(length[i] / length[i - 1], length[i - 1] / length[i]);
+                EXPECT_LE(r, aspect == 3.0 ? 1.27 : 1.0 + 1e-6) << "x = " << x[i];
+            }
         }
     }
 }
