@@ -154,7 +154,8 @@ void readContact(const std::string& file, const toml::table& root, CaseConfig& c
 
 WallSpec readWall(const std::string& file, const toml::table& t, std::size_t index) {
     TableReader r(file, t, "[[wall]]",
-                  {"name", "shape", "point", "normal", "axis", "radius", "velocity", "friction"});
+                  {"name", "shape", "point", "normal", "axis", "radius", "velocity", "friction",
+                   "ramp_time"});
     WallSpec w;
     w.line = r.line();
     w.name = r.text("name", "wall " + std::to_string(index), false);
@@ -186,6 +187,7 @@ WallSpec readWall(const std::string& file, const toml::table& t, std::size_t ind
     }
     if (r.has("velocity")) w.velocity = r.vector("velocity");
     w.friction = r.number("friction", 0.0, false, false);
+    w.rampTime = r.number("ramp_time", 0.0, false, false);
     return w;
 }
 

@@ -42,6 +42,7 @@ struct WallSpec {
     double radius = 0.0;           ///< cylinder: R > 0 [m]
     Vec3 velocity = Vec3::Zero();  ///< [m/s]
     double friction = 0.0;         ///< Coulomb μ
+    double rampTime = 0.0;         ///< [s] the speed rises linearly to `velocity` over it
     int line = 0;
 };
 

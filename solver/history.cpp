@@ -52,11 +52,11 @@ const WallColumn kWallColumns[] = {
     {"fy", "%.9e", [](const State&, const Wall&, const Vec3& f) { return f[1]; }},
     {"fz", "%.9e", [](const State&, const Wall&, const Vec3& f) { return f[2]; }},
     {"ux", "%.9e",
-     [](const State& s, const Wall& w, const Vec3&) { return s.time * w.velocity[0]; }},
+     [](const State& s, const Wall& w, const Vec3&) { return w.displacement(s.time)[0]; }},
     {"uy", "%.9e",
-     [](const State& s, const Wall& w, const Vec3&) { return s.time * w.velocity[1]; }},
+     [](const State& s, const Wall& w, const Vec3&) { return w.displacement(s.time)[1]; }},
     {"uz", "%.9e",
-     [](const State& s, const Wall& w, const Vec3&) { return s.time * w.velocity[2]; }},
+     [](const State& s, const Wall& w, const Vec3&) { return w.displacement(s.time)[2]; }},
 };
 
 }  // namespace

@@ -144,6 +144,7 @@ Wall wallOf(const WallSpec& w) {
     out.shape = w.cylinder ? WallShape::Cylinder : WallShape::Plane;
     out.axis = w.axis;
     out.radius = w.radius;
+    out.rampTime = w.rampTime;
     return out;
 }
 

@@ -27,6 +27,8 @@ RigidWalls::RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vecto
     for (Wall& w : walls_) {
         if (!(w.friction >= 0.0))
             throw InputError("wall '" + w.name + "': the friction coefficient must be ≥ 0");
+        if (!(w.rampTime >= 0.0 && std::isfinite(w.rampTime)))
+            throw InputError("wall '" + w.name + "': the ramp time must be ≥ 0");
         if (w.shape == WallShape::Plane) {
             normalise(w.normal, w, "normal");
             continue;
@@ -66,7 +68,8 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
             const Wall& w = walls_[iw];
             Vec3& mine = perWall_[ia * walls + iw];
             mine = Vec3::Zero();
-            const Vec3 q = x[ia] - (w.point + t * w.velocity);
+            const Vec3 q = x[ia] - (w.point + w.displacement(t));
+            const Vec3 wallVelocity = w.velocityAt(t);
             double gap = 0.0, distance = 0.0;
             Vec3 n = w.normal;
             if (w.shape == WallShape::Plane) {
@@ -90,11 +93,11 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
                 normalForce += (fn / distance) * turning;
             }
             u += 0.5 * k * gap * gap;
-            push += normalForce.dot(w.velocity);
+            push += normalForce.dot(wallVelocity);
             w2 += k / ref.mass[ia];
             mine = normalForce;
             if (w.friction > 0.0) {
-                const Vec3 slip = v[ia] - w.velocity;
+                const Vec3 slip = v[ia] - wallVelocity;
                 const Vec3 wt = slip - slip.dot(n) * n;
                 const double speed = wt.norm();
                 if (speed > 0.0) {

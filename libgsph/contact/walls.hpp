@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Rigid walls (issue #6; docs/theory.md "Walls"): planes and cylinders in rigid translation,
-// p(t) = point + velocity·t. A particle a at x_a penetrates a wall by
+// p(t) = point + displacement(t) (velocity·t, or after a linear speed ramp). A particle a at x_a
+// penetrates a wall by
 //   plane    (unit normal n towards the bodies):  g_a = ρ_a(n) − (x_a − p)·n,
 //   cylinder (unit axis e through p, radius R):   g_a = ρ_a(n) − (r_a − R),
 //            q = x_a − p, r_a = |q − (q·e)e|, n = (q − (q·e)e)/r_a the outward radial direction
@@ -38,6 +39,23 @@ struct Wall {
     WallShape shape = WallShape::Plane;
     Vec3 axis = Vec3::UnitY();  ///< cylinder: direction of its axis (normalised by RigidWalls)
     double radius = 0.0;        ///< cylinder: R > 0 [m]; the bodies are outside it
+    /// T ≥ 0: the wall's speed rises linearly from 0 to `velocity` over [0, T] (a smooth start
+    /// for quasi-static loading), then stays; 0: `velocity` from t = 0.
+    double rampTime = 0.0;
+
+    /// Speed factor s'(t) = min(t/T, 1) (1 without a ramp).
+    double speedFactor(double t) const {
+        return rampTime > 0.0 && t < rampTime ? t / rampTime : 1.0;
+    }
+    /// The wall's velocity at time t.
+    Vec3 velocityAt(double t) const { return speedFactor(t) * velocity; }
+    /// Its displacement from `point` at time t: velocity · s(t), s(t) = t²/2T before T, t − T/2
+    /// after.
+    Vec3 displacement(double t) const {
+        const double s =
+            rampTime > 0.0 && t < rampTime ? 0.5 * t * t / rampTime : t - 0.5 * rampTime;
+        return s * velocity;
+    }
 };
 
 /// What the walls did at the last evaluation, in total.

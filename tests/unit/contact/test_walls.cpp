@@ -199,6 +199,40 @@ TEST(CylinderWall, MovingCylinderKeepsTheEnergyLedgerBalanced) {
     EXPECT_GT(sim.wallForces()[1][2], 0.0) << "the floor pushes up";
 }
 
+// A speed ramp (ramp_time T): the displacement is the integral of the velocity (t²/2T, then
+// t − T/2), and during the ramp the push power is still the rate of the spring energy.
+TEST(CylinderWall, SpeedRampIsTheIntegralOfItsVelocityAndKeepsThePowerIdentity) {
+    Wall w = cylinder(Vec3::Zero(), Vec3::UnitY(), 0.003, Vec3(0.0, 0.0, -2.0));
+    w.rampTime = 4e-5;
+    EXPECT_EQ(w.velocityAt(0.0), Vec3::Zero());
+    EXPECT_EQ(w.velocityAt(2e-5), Vec3(0.0, 0.0, -1.0));
+    EXPECT_EQ(w.velocityAt(5e-5), Vec3(0.0, 0.0, -2.0));
+    EXPECT_NEAR(w.displacement(2e-5)[2], -2.0 * 0.5 * 4e-10 / 4e-5, 1e-18);
+    EXPECT_NEAR(w.displacement(6e-5)[2], -2.0 * (6e-5 - 2e-5), 1e-18);
+    for (double t : {1e-5, 3.9e-5, 4.1e-5}) {  // d/dt displacement = velocity, across the knee
+        const double h = 1e-9;
+        EXPECT_NEAR((w.displacement(t + h)[2] - w.displacement(t - h)[2]) / (2 * h),
+                    w.velocityAt(t)[2], 1e-6);
+    }
+    Block b = block(Vec3(0.004, 0.008, 0.006), {4, 4, 4});
+    const std::size_t n = b.ref.X.size();
+    w.point = Vec3(0.0021, 0.004, 0.006 + 0.003 - 0.0004);  // pressed 0.4 mm + ℓ/2 into the top
+    RigidWalls walls(b.ref, {w}, b.k, b.shapes);
+    const std::vector<Vec3> v(n, Vec3::Zero());
+    const auto at = [&](double t) {
+        Forces f(n);
+        return walls.addForces(t, 0.0, b.ref.X, v, f.force, f.friction, f.frequency2, f.wallForce);
+    };
+    const double t = 1e-5, step = 1e-10;
+    const WallResult now = at(t);
+    const double rate = (at(t + step).energy - at(t - step).energy) / (2 * step);
+    EXPECT_GT(now.pushPower, 0.0);
+    EXPECT_NEAR(rate, now.pushPower, 1e-6 * std::abs(now.pushPower));
+    Wall bad = w;
+    bad.rampTime = -1.0;
+    EXPECT_THROW(RigidWalls(b.ref, {bad}, b.k, b.shapes), InputError);
+}
+
 TEST(CylinderWall, BadShapeParametersAreInputErrors) {
     Block b = block(Vec3(0.003, 0.003, 0.003), {3, 3, 3});
     EXPECT_THROW(RigidWalls(b.ref, {cylinder(Vec3::Zero(), Vec3::Zero(), 0.01)}, b.k, b.shapes),
