@@ -20,9 +20,11 @@
 // they grow towards the struck edge x = 0 (in x, up to `coarsen` h at x = 0) and towards the
 // plate's middle line y = 0 (in y, up to `coarsen` h at y = 0), where no crack runs. The
 // plate is not cut at y = 0 for symmetry: both cracks are computed.
-// The notch width s should exceed 2κ H of the finest uniform layout compared (`--lattice H`),
-// so that the uniform layout has no SPH pairs across the slot (κ = 1.2, support 2κ H: at least
-// two lattice rows must fall inside the slot); the default 4.5 mm serves H ≥ 1 mm.
+// The notch width s must keep the slot open for the SPH pairs (support 2κ spacings, κ = 1.2):
+// the uniform layout (`--lattice H`) needs at least two lattice rows inside the slot, s ≳ 2.25 H;
+// the GSPH layout needs s + h > 2κ h (the rows either side are paired through the overset
+// coupling of the blocks otherwise), s > 1.4 h. The default 4.5 mm serves h, H ≤ 2 mm;
+// scripts/validate_kalthoff sets s = 2.25 Δx.
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m).
 // Body: Physical Volume "plate". Sets: "impact" (x = 0 between the notches), "notch_tips"
