@@ -136,8 +136,9 @@ void renderPictures(const std::vector<std::string>& pictured, bool final, const 
     if (!fs::exists(historyCsv)) return;
     const gsph::post::HistoryTable history = gsph::post::readHistory(historyCsv);
     const std::vector<std::string> energies = {
-        "kinetic_energy", "internal_energy", "plastic_work",  "damage_dissipation",
-        "hourglass_work", "viscous_work",    "external_work", "total_energy"};
+        "kinetic_energy",     "internal_energy", "plastic_work",
+        "damage_dissipation", "fracture_energy", "hourglass_work",
+        "viscous_work",       "external_work",   "total_energy"};
     const int plotWidth = size[0] * 5 / 6, plotHeight = size[1] * 3 / 4;
     if (!gsph::post::plotHistory(history, energies, "energy [J]", out / "history.png", plotWidth,
                                  plotHeight))

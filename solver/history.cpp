@@ -28,6 +28,8 @@ const HistoryColumn kHistoryColumns[] = {
     {"plastic_work", "%.9e", [](const State&, const EnergyReport& e) { return e.plasticWork; }},
     {"damage_dissipation", "%.9e",
      [](const State&, const EnergyReport& e) { return e.damageDissipation; }},
+    {"fracture_energy", "%.9e",
+     [](const State&, const EnergyReport& e) { return e.fractureEnergy; }},
     {"hourglass_work", "%.9e", [](const State&, const EnergyReport& e) { return e.hourglassWork; }},
     {"viscous_work", "%.9e", [](const State&, const EnergyReport& e) { return e.viscousWork; }},
     {"contact_energy", "%.9e", [](const State&, const EnergyReport& e) { return e.contactEnergy; }},

@@ -298,10 +298,10 @@ void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
                   "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J, "
-                  "contact energy %.3e J",
+                  "fracture energy %.3e J, contact energy %.3e J",
                   e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
                   e.boundaryWork + e.externalWork, e.plasticWork, e.damageDissipation,
-                  e.contactEnergy);
+                  e.fractureEnergy, e.contactEnergy);
     log.add(line);
 }
 
@@ -413,6 +413,18 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                          summary.checkpoint.string());
     } else {
         logEnd(*options.log, summary, sim.energy());
+        const BrittleBonds& bonds = sim.integrator().bonds();
+        if (bonds.enabled()) {
+            Index detached = 0;
+            for (Index a = 0; a < sim.reference().size(); ++a)
+                if (bonds.detached(a)) ++detached;
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "bonds: %d pairs broken, %d particles detached (no stress); no particle "
+                          "is removed",
+                          bonds.brokenPairs(), detached);
+            options.log->add(line);
+        }
     }
     return summary;
 }

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "kinematics/deformation_gradient.hpp"
 #include "spaces/metric.hpp"
 
 namespace gsph {
@@ -28,6 +29,7 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
     damaged_.assign(n, 0);
     detached_.assign(n, 0);
     changed_.assign(n, 0);
+    released_.assign(n, 0.0);
     intactDetB_.resize(n);
     parallelFor(ref.size(), [&](Index a) {
         intactDetB_[static_cast<std::size_t>(a)] =
@@ -68,24 +70,43 @@ void BrittleBonds::attach(const State& state) {
                 ++brokenPairs_;
 }
 
-Index BrittleBonds::breakStretchedBonds(State& state) {
-    if (!enabled_) return 0;
+double BrittleBonds::internalPower(const State& state, Index a) const {
+    const auto ia = static_cast<std::size_t>(a);
+    if (detached_[ia] != 0) return 0.0;
+    const Mat3& F = state.F[ia];
+    const double J = F.determinant();
+    const Mat3 K = ref_.quadVolume[ia] * state.cauchy[ia] * (J * F.inverse().transpose()) * G_[ia];
+    Mat3 gradX, gradV;
+    thetaGradients(ref_, a, state.x.data(), state.v.data(), gradX, gradV, state.bondIntact.data());
+    return (K.array() * gradV.array()).sum();
+}
+
+BondBreak BrittleBonds::breakStretchedBonds(State& state) {
+    if (!enabled_) return {};
     const PairList& P = ref_.pairs;
     std::uint8_t* intact = state.bondIntact.data();
-    // Each particle writes only its own CSR entries; (a, b) and (b, a) compare the same
-    // squared lengths, so both sides decide alike.
+    const auto stretched = [&](std::size_t ia, Index k, double factor) {
+        const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+        const double current = (state.x[b] - state.x[ia]).squaredNorm();
+        const double initial = (ref_.X[b] - ref_.X[ia]).squaredNorm();
+        return current >= factor * initial;
+    };
+    // Each particle reads and writes only its own CSR entries (its old K:∇v before writing
+    // them); (a, b) and (b, a) compare the same squared lengths, so both sides decide alike.
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         const double limit = stretch_[ia];
         changed_[ia] = 0;
+        released_[ia] = 0.0;
         if (limit == 0.0) return;
         const double factor = (1.0 + limit) * (1.0 + limit);
+        bool any = false;
+        for (Index k = P.begin(a); k < P.end(a) && !any; ++k)
+            any = intact[k] != 0 && stretched(ia, k, factor);
+        if (!any) return;
+        released_[ia] = internalPower(state, a);  // over the old bonds, with the old G
         for (Index k = P.begin(a); k < P.end(a); ++k) {
-            if (intact[k] == 0) continue;
-            const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
-            const double current = (state.x[b] - state.x[ia]).squaredNorm();
-            const double initial = (ref_.X[b] - ref_.X[ia]).squaredNorm();
-            if (current >= factor * initial) {
+            if (intact[k] != 0 && stretched(ia, k, factor)) {
                 intact[k] = 0;
                 ++changed_[ia];
             }
@@ -94,13 +115,20 @@ Index BrittleBonds::breakStretchedBonds(State& state) {
     // Both sides of a pair break in the same call: each fresh pair is counted twice.
     Index freshEntries = 0;
     for (Index c : changed_) freshEntries += c;
-    if (freshEntries == 0) return 0;
-    const Index fresh = freshEntries / 2;
-    brokenPairs_ += fresh;
+    if (freshEntries == 0) return {};
+    BondBreak result;
+    result.pairs = freshEntries / 2;
+    brokenPairs_ += result.pairs;
     parallelFor(ref_.size(), [&](Index a) {
-        if (changed_[static_cast<std::size_t>(a)] != 0) refreshParticle(state, a);
+        const auto ia = static_cast<std::size_t>(a);
+        if (changed_[ia] == 0) return;
+        refreshParticle(state, a);
+        released_[ia] = 0.5 * state.dt * (released_[ia] - internalPower(state, a));
     });
-    return fresh;
+    result.releasedEnergy = deterministicSum(
+        ref_.size(), 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; },
+        partialSums_);
+    return result;
 }
 
 BondView BrittleBonds::view(const State& state) const {

@@ -16,6 +16,16 @@
 // Both directions of a pair evaluate the same stretch from the same positions, so a and b
 // always agree without writing each other's entries: the check runs in parallel and gives the
 // same result for any thread count.
+//
+// Energy released (docs/theory.md "Fracture energy"): the step that breaks bonds kicks with
+// the old bonds' force f_n in its first half and the new bonds' in its second, while the
+// stress advances with the new bonds' Ḟ. Against a step whose bonds had broken at t_n, its
+// kinetic energy changes by ½Δt (f_n^old − f_n^new)·v_{n+½} = ½Δt Σ_a (K_a^new : ∇v_a^new −
+// K_a^old : ∇v_a^old), using Σ_a f_a·v_a = −Σ_a K_a : ∇v_a (exact for the pair force of
+// forces/internal_force.hpp over any symmetric bond set), K = V J σ F^{-T} G and ∇v the
+// θ-gradient of v_{n+½} over the bonds. Only particles that lost a bond contribute; the
+// negative of that change is the energy the broken pairs take out of the motion, booked as
+// fracture energy. (The overset band's difference form is outside this identity.)
 #pragma once
 
 #include <cstdint>
@@ -27,6 +37,12 @@
 namespace gsph {
 
 /// What the pair loops need of the bonds: null pointers when no body can break.
+/// What one call of breakStretchedBonds did.
+struct BondBreak {
+    Index pairs = 0;              ///< pairs (a < b) broken by the call
+    double releasedEnergy = 0.0;  ///< ½Δt Σ_a (K^old:∇v^old − K^new:∇v^new) [J] (see above)
+};
+
 struct BondView {
     const std::uint8_t* intact = nullptr;   ///< per CSR pair: 1 holds, 0 broken
     const std::uint8_t* damaged = nullptr;  ///< per particle: 1 if any of its bonds broke
@@ -54,9 +70,10 @@ class BrittleBonds {
     /// Derives G, damaged and detached from state.bondIntact (at the start and after a restart).
     void attach(const State& state);
 
-    /// Breaks every bond stretched to εmax at the current positions state.x, updates what
-    /// derives from it; returns the number of pairs (a < b) broken by this call.
-    Index breakStretchedBonds(State& state);
+    /// Breaks every bond stretched to εmax at the current positions state.x (x_{n+1}), updates
+    /// what derives from it; returns the pairs broken and the energy they release, from
+    /// state.v (v_{n+½}), state.F and state.cauchy (F_n, σ_n) and the step state.dt.
+    BondBreak breakStretchedBonds(State& state);
 
     /// G per particle: the reference's until a bond of the particle breaks.
     const std::vector<Mat3>& G() const { return enabled_ ? G_ : ref_.G; }
@@ -67,14 +84,18 @@ class BrittleBonds {
 
   private:
     void refreshParticle(const State& state, Index a);
+    /// K : ∇v of particle a over its surviving bonds with its current G (0 when detached).
+    double internalPower(const State& state, Index a) const;
 
     const Reference& ref_;
     std::vector<double> stretch_;  ///< εmax per particle
     bool enabled_ = false;
     std::vector<Mat3> G_;
     std::vector<std::uint8_t> damaged_, detached_;
-    std::vector<Index> changed_;      ///< per particle: bonds broken by the current call
-    std::vector<double> intactDetB_;  ///< |det B| with every bond, per particle
+    std::vector<Index> changed_;       ///< per particle: bonds broken by the current call
+    std::vector<double> released_;     ///< per particle: its share of the released energy
+    std::vector<double> partialSums_;  ///< scratch of deterministicSum
+    std::vector<double> intactDetB_;   ///< |det B| with every bond, per particle
     Index brokenPairs_ = 0;
 };
 

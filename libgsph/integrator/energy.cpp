@@ -40,6 +40,7 @@ EnergyReport measureEnergy(const Reference& ref, const State& state,
     e.boundaryWork = state.ledger.boundaryWork;
     e.plasticWork = state.ledger.plasticWork;
     e.damageDissipation = state.ledger.damageDissipation;
+    e.fractureEnergy = state.ledger.fractureEnergy;
     e.contactEnergy = state.ledger.contactEnergy;
     e.externalWork = state.ledger.externalWork;
     return e;

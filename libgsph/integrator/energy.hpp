@@ -3,8 +3,8 @@
 //   kinetic = Σ ½ m |v|²;  elastic = Σ V_a J_a ψ(σ_a, history_a) (ψ: the material's stored
 //   energy per current volume, V_a the quadrature volume of DESIGN §4); the ledger's works
 //   (integrated by the integrator); the contact springs' potential. Balance:
-//   kinetic + elastic + viscous + hourglass + plastic + damage + contact − boundary − external
-//   = const.
+//   kinetic + elastic + viscous + hourglass + plastic + damage + fracture + contact − boundary
+//   − external = const.
 #pragma once
 
 #include <vector>
@@ -21,14 +21,15 @@ struct EnergyReport {
     double boundaryWork = 0.0;       ///< work done on the bodies by prescribed velocities
     double plasticWork = 0.0;        ///< dissipated by plastic flow
     double damageDissipation = 0.0;  ///< elastic energy lost by failing particles
+    double fractureEnergy = 0.0;     ///< elastic energy released by brittle bond failure
     double contactEnergy = 0.0;      ///< potential of the penalty springs (bodies, walls)
     double externalWork = 0.0;       ///< work of gravity, set forces and walls on the bodies
     Vec3 momentum = Vec3::Zero();
-    /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage + contact
-    /// − boundary − external.
+    /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage + fracture
+    /// + contact − boundary − external.
     double total() const {
         return kinetic + elastic + viscousWork + hourglassWork + plasticWork + damageDissipation +
-               contactEnergy - boundaryWork - externalWork;
+               fractureEnergy + contactEnergy - boundaryWork - externalWork;
     }
 };
 

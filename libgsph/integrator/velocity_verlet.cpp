@@ -105,13 +105,19 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
 }
 
 // A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
-// still needs a sound speed and a length for the time step.
+// still needs a sound speed and a length for the time step. The elastic energy its stress
+// stored, V J ψ(σ), is released when σ is set to zero: booked as this step's fracture energy
+// (zero on later steps, σ being zero then).
 template <class Model>
 void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
-    s.state.cauchy[ia].setZero();
-    MaterialPoint point;
-    point.density = model.elastic().density / s.state.F[ia].determinant();
     StepWorkspace& w = s.work;
+    const double J = s.state.F[ia].determinant();
+    MaterialPoint point;
+    point.cauchy = s.state.cauchy[ia];
+    point.density = model.elastic().density / J;
+    if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
+    w.fractureEnergy[ia] = s.ref.quadVolume[ia] * J * model.storedEnergyDensity(point);
+    s.state.cauchy[ia].setZero();
     w.factors.N.set(ia, Mat3::Zero());
     w.factors.K.set(ia, Mat3::Zero());
     if (!w.factors.P.empty()) w.factors.P.set(ia, Mat3::Zero());
@@ -218,6 +224,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
             work_.plasticWork.assign(n, 0.0);
             work_.damageDissipation.assign(n, 0.0);
         }
+    if (bonds_.enabled()) work_.fractureEnergy.assign(n, 0.0);
     if (options_.viscosity.enabled()) work_.parts.viscous.assign(n, Vec3::Zero());
     if (options_.hourglass != 0.0) work_.parts.hourglass.assign(n, Vec3::Zero());
     setUpContactAndLoads(loads, std::move(walls));
@@ -346,8 +353,14 @@ void VelocityVerlet::applyConstraints(State& state, double t) {
         }
 }
 
-// This step's plastic work and failure losses of the bodies with a history, in a fixed order.
+// This step's plastic work and failure losses of the bodies with a history, and the fracture
+// energy of the particles detached by this step's broken bonds, in a fixed order.
 void VelocityVerlet::bookDissipation(State& state) {
+    if (bonds_.enabled())
+        state.ledger.fractureEnergy += deterministicSum(
+            ref_.size(), 0.0,
+            [&](Index a) { return work_.fractureEnergy[static_cast<std::size_t>(a)]; },
+            work_.partialSums);
     for (const BodyRange& body : bodies_) {
         if (!tracksHistory(*body.material)) continue;
         const auto sumOver = [&](const std::vector<double>& perParticle) {
@@ -461,7 +474,7 @@ void VelocityVerlet::step(State& state) {
         state.x[ia] += dt * state.v[ia];
         packKinematics(state, a);
     });
-    bonds_.breakStretchedBonds(state);
+    state.ledger.fractureEnergy += bonds_.breakStretchedBonds(state).releasedEnergy;
     // 3–5: kinematics, stress, forces at t_{n+1} (viscosity sees v_{n+½}).
     state.time += dt;
     const double t1 = omp_get_wtime();

@@ -5,7 +5,8 @@
 //   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
 //   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
 //      (Johnson–Cook) also advance ε̄p, T, D, e and book their plastic work and the energy
-//      lost by failing particles in the ledger
+//      lost by failing particles in the ledger; a particle detached by broken bonds books the
+//      elastic energy its stress held as fracture energy
 //   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m, f = internal force + penalty contact between
 //      bodies + rigid walls (friction from v_{n+½}) + gravity and set forces (contact/,
 //      boundary/loads.hpp)
@@ -77,6 +78,9 @@ struct StepWorkspace {
     /// Per particle, this step's V J Δw_p and failure loss [J] (sized only when a body's model
     /// tracks a history; summed into the ledger in a fixed order).
     std::vector<double> plasticWork, damageDissipation;
+    /// Per particle, the elastic energy released when it was detached [J] (sized only when
+    /// bonds can break; written by the detaching step alone, zero before and after it).
+    std::vector<double> fractureEnergy;
     std::vector<double> partialSums;  ///< scratch of deterministicSum
     // Contact and loads (sized only when the run has them).
     std::vector<double> contactFrequency2;  ///< ω_a² bound of the contact springs [1/s²]

@@ -18,6 +18,10 @@ struct EnergyLedger {
     double plasticWork = 0.0;    ///< dissipated by plastic flow, Σ V J Δw_p (≥ 0)
     /// Elastic energy the failed particles lost when their damage reached 1 (DESIGN §5).
     double damageDissipation = 0.0;
+    /// Elastic energy released by brittle bond failure [J]: the stored energy of the particles
+    /// whose surviving bonds no longer span the space when they were detached (their stress is
+    /// set to zero, failure/brittle_bonds.hpp; docs/theory.md "Fracture energy").
+    double fractureEnergy = 0.0;
     /// Done on the bodies by gravity, set forces and walls (their push and friction) [J].
     double externalWork = 0.0;
     /// Potential of the penalty springs (contact between bodies, walls) at the current x [J]:
@@ -89,6 +93,7 @@ struct State {
         visit("ledger/boundary_work", s.ledger.boundaryWork);
         visit("ledger/plastic_work", s.ledger.plasticWork);
         visit("ledger/damage_dissipation", s.ledger.damageDissipation);
+        visit("ledger/fracture_energy", s.ledger.fractureEnergy);
         visit("ledger/viscous_power", s.ledger.viscousPower);
         visit("ledger/hourglass_power", s.ledger.hourglassPower);
         visit("ledger/boundary_power", s.ledger.boundaryPower);

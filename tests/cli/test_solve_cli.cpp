@@ -127,7 +127,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     // Energy: the ledger balances the boundary work (the driven face) within 1 %.
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
-    ASSERT_EQ(header.size(), 15u);
+    ASSERT_EQ(header.size(), 16u);
     // The documented order (docs/formats.md): clock, energies, total, momentum.
     const std::vector<std::string> expected = {"time",
                                                "step",
@@ -136,6 +136,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
                                                "internal_energy",
                                                "plastic_work",
                                                "damage_dissipation",
+                                               "fracture_energy",
                                                "hourglass_work",
                                                "viscous_work",
                                                "contact_energy",

@@ -141,6 +141,7 @@ TEST(Checkpoint, ResumedSimulationStepsBitIdentically) {
     EXPECT_GT(brokenEntries(a->state()), brokenAtCheckpoint);
     EXPECT_GT(a->state().ledger.plasticWork, 0.0);
     EXPECT_GT(a->state().ledger.damageDissipation, 0.0);
+    EXPECT_NE(a->state().ledger.fractureEnergy, 0.0);
 }
 
 TEST(Checkpoint, ResumeRefusesAStateOfAnotherShape) {

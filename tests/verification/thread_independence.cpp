@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "core/lanes.hpp"
@@ -18,10 +19,12 @@
 namespace gsph {
 namespace {
 
-State runWithThreads(int threads, EnergyReport* energy, const Material& material, int steps = 150) {
+State runWithThreads(int threads, EnergyReport* energy, const Material& material, int steps = 150,
+                     double bondStretch = 0.0) {
     const int saved = omp_get_max_threads();
     omp_set_num_threads(threads);
     SolverOptions options;
+    options.bondStretch = {bondStretch};
     options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;
     using Kind = AxisGrading::Kind;
@@ -78,6 +81,21 @@ TEST(ThreadIndependence, PlasticRunsAreBitIdenticalToo) {
     EXPECT_EQ(std::memcmp(&e1.elastic, &e2.elastic, sizeof(double)), 0);
     EXPECT_GT(e1.plasticWork, 0.0);
     EXPECT_GT(e1.damageDissipation, 0.0);
+}
+
+// Brittle bonds break where the -40 m/s half pulls away; the broken flags, the recomputed
+// gradients and the fracture energy (failure/brittle_bonds.hpp) do not depend on the thread
+// count either.
+TEST(ThreadIndependence, BrokenBondsAndTheirEnergyToo) {
+    EnergyReport e1, e2;
+    const State s1 = runWithThreads(1, &e1, kSteel, 60, 1e-3);
+    const State s2 = runWithThreads(2, &e2, kSteel, 60, 1e-3);
+    EXPECT_TRUE(bitIdentical(s1.x, s2.x));
+    EXPECT_TRUE(bitIdentical(s1.cauchy, s2.cauchy));
+    EXPECT_TRUE(bitIdentical(s1.bondIntact, s2.bondIntact));
+    EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
+    EXPECT_GT(std::count(s1.bondIntact.begin(), s1.bondIntact.end(), std::uint8_t{0}), 0);
+    EXPECT_NE(e1.fractureEnergy, 0.0);  // signed: bonds break here under axial compression
 }
 
 // Contact between two bodies (the current-configuration search, the pair forces and energy),
