@@ -256,6 +256,12 @@ std::optional<SpaceLocation> SpaceMap::solveInCell(const Int3& cell, const Vec3&
         for (int d = 0; d < 3; ++d) loc.u[d] = cell[d] + std::clamp(xi[d], lo[d], hi[d]);
         return loc;
     };
+    // Round-off in X − X(ξ) is ~ε|X|, which is ε|X|/size in ξ: a cell far from the origin
+    // cannot step below that, so the tolerance grows with it (a 1 mm cell 0.2 m away: 2e-14).
+    const double roundOff = 64.0 * std::numeric_limits<double>::epsilon() *
+                            X.cwiseAbs().maxCoeff() /
+                            std::max(size, std::numeric_limits<double>::min());
+    const double stepTolerance = std::max(kNewtonStep, roundOff);
     bool converged = false;
     for (int it = 0; it < kMaxNewton && !converged; ++it) {
         const Mat3 J = map.jacobian(xi);
@@ -265,7 +271,7 @@ std::optional<SpaceLocation> SpaceMap::solveInCell(const Int3& cell, const Vec3&
         xi -= step;
         if (!xi.allFinite() || xi.cwiseAbs().maxCoeff() > kDivergence) return std::nullopt;
         const double change = step.cwiseAbs().maxCoeff();
-        converged = change < kNewtonStep;
+        converged = change < stepTolerance;
         // Settling (steps below a tenth of a cell) more than a cell outside this cell's range:
         // the solution belongs to another cell.
         if (it >= 2 && change < 0.1 && ((xi - hi).maxCoeff() > 1.0 || (lo - xi).maxCoeff() > 1.0)) {

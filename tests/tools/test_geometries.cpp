@@ -470,6 +470,18 @@ TEST(Geometries, NotchedPlate) {
     EXPECT_EQ(f.sets.at("notch_tip").size(), 2u);
 }
 
+// The Kalthoff–Winkler plate (200 mm long) with 1 mm cells where the cracks run: its transient
+// particles lie up to 0.2 m from the origin, where the Newton iterations of the inverse map
+// cannot step below ~ε|X|/h ≈ 2e-14 cells; an absolute 1e-14 stalled them (a MeshError below
+// h ≈ 1.4 mm). Every overset entry must reproduce its X in the other space.
+TEST(Geometries, KalthoffWinklerConvertsWithFineCellsFarFromTheOrigin) {
+    const std::string path = geometry("kalthoff_winkler.geo");
+    const Conversion c = convert(path, {{"h", 0.001}});
+    validateParticleFile(c.particles);
+    EXPECT_GT(c.particles.size(), 40000);
+    EXPECT_GT(c.particles.overset.size(), 1000u);
+}
+
 TEST(Geometries, PlateAndProjectile) {
     const std::string path = geometry("plate_projectile.geo");
     const Conversion c = convert(path);
