@@ -67,13 +67,12 @@ void Simulation::addWall(Wall wall) {
     walls_.push_back(std::move(wall));
 }
 
-// The one place the integrator is built: a fresh start and a resumed run see the same
-// constraints, loads and walls.
-const std::vector<Vec3>& Simulation::wallForces() const {
-    static const std::vector<Vec3> none;
-    return integrator_ ? integrator_->walls().totalForces() : none;
+std::vector<Vec3> Simulation::wallForces() const {
+    return integrator_ ? integrator_->walls().totalForces() : std::vector<Vec3>{};
 }
 
+// The one place the integrator is built: a fresh start and a resumed run see the same
+// constraints, loads and walls.
 void Simulation::makeIntegrator() {
     integrator_ =
         std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);

@@ -69,7 +69,7 @@ class Simulation {
     EnergyReport energy() const { return measureEnergy(ref_, state_, bodies_); }
     /// Per wall (in the order added), its force on the bodies at the last force evaluation
     /// [N]; empty without walls or before start().
-    const std::vector<Vec3>& wallForces() const;
+    std::vector<Vec3> wallForces() const;
 
   private:
     void makeIntegrator();

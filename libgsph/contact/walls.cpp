@@ -38,7 +38,6 @@ RigidWalls::RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vecto
             throw InputError("wall '" + w.name + "': the cylinder's radius must be > 0");
         cylinder = true;
     }
-    totals_.assign(walls_.size(), Vec3::Zero());
     if (walls_.empty()) return;
     const auto n = static_cast<std::size_t>(ref.size());
     radius_.resize(n * walls_.size());
@@ -123,12 +122,19 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
     };
     result.energy = sum(energy_);
     result.pushPower = sum(pushPower_);
-    for (std::size_t iw = 0; iw < walls; ++iw)
-        totals_[iw] = deterministicSum(
-            ref.size(), Vec3(Vec3::Zero()),
-            [&](Index a) -> Vec3 { return perWall_[static_cast<std::size_t>(a) * walls + iw]; },
-            partialVec_);
     return result;
+}
+
+std::vector<Vec3> RigidWalls::totalForces() const {
+    const std::size_t walls = walls_.size();
+    std::vector<Vec3> totals(walls, Vec3::Zero()), partial;
+    if (walls == 0) return totals;
+    for (std::size_t iw = 0; iw < walls; ++iw)
+        totals[iw] = deterministicSum(
+            ref_->size(), Vec3(Vec3::Zero()),
+            [&](Index a) -> Vec3 { return perWall_[static_cast<std::size_t>(a) * walls + iw]; },
+            partial);
+    return totals;
 }
 
 }  // namespace gsph

@@ -84,8 +84,9 @@ class RigidWalls {
                          std::vector<Vec3>& wallForce);
 
     /// Per wall, the total force (normal and friction) it exerted on the bodies at the last
-    /// addForces [N] (zero before the first); the reaction on the wall is its opposite.
-    const std::vector<Vec3>& totalForces() const { return totals_; }
+    /// addForces [N] (zero before the first); the reaction on the wall is its opposite. Summed
+    /// on demand (history rows), in a fixed order, not in every step.
+    std::vector<Vec3> totalForces() const;
 
   private:
     const Reference* ref_ = nullptr;
@@ -94,9 +95,7 @@ class RigidWalls {
     std::vector<double> radius_;  ///< planes: ρ_a(n_w), particle-major: radius_[a · walls + w]
     std::vector<Mat3> S_;         ///< the ellipsoids' S_a (kept only when a cylinder needs them)
     std::vector<Vec3> perWall_;   ///< force of wall w on a: perWall_[a · walls + w]
-    std::vector<Vec3> totals_;    ///< per wall: Σ_a perWall_
     std::vector<double> energy_, pushPower_, partial_;  ///< per particle scratch
-    std::vector<Vec3> partialVec_;                      ///< scratch of the per-wall sums
 };
 
 }  // namespace gsph

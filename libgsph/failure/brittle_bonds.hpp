@@ -36,13 +36,13 @@
 
 namespace gsph {
 
-/// What the pair loops need of the bonds: null pointers when no body can break.
 /// What one call of breakStretchedBonds did.
 struct BondBreak {
     Index pairs = 0;              ///< pairs (a < b) broken by the call
     double releasedEnergy = 0.0;  ///< ½Δt Σ_a (K^old:∇v^old − K^new:∇v^new) [J] (see above)
 };
 
+/// What the pair loops need of the bonds: null pointers when no body can break.
 struct BondView {
     const std::uint8_t* intact = nullptr;   ///< per CSR pair: 1 holds, 0 broken
     const std::uint8_t* damaged = nullptr;  ///< per particle: 1 if any of its bonds broke

@@ -31,6 +31,21 @@ void makeParticles(const TempDir& dir) {
     ASSERT_EQ(r.status, 0) << r.err;
 }
 
+// The sample bar's material and body (keys of the [[body]] table may follow).
+const std::string kSteelBar =
+    "[[material]]\nname = \"steel\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
+    "poisson_ratio = 0.3\n"
+    "[[body]]\ngroup = \"bar\"\nmaterial = \"steel\"\n";
+
+// Writes `text` as dir/NAME next to the sample particles and solves it into dir/run.
+test::ProcessResult solveCaseText(const TempDir& dir, const std::string& name,
+                                  const std::string& text) {
+    makeParticles(dir);
+    const fs::path casePath = dir / name;
+    std::ofstream(casePath) << text;
+    return runCommand(kSolve + " " + casePath.string() + " -o " + (dir / "run").string());
+}
+
 struct BadCase {
     const char* file;
     const char* message;  ///< expected part of the one-line error
@@ -167,22 +182,17 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
 // balances: kinetic + internal + … + contact energy − external work stays at its initial value.
 TEST(SolveCli, WallGravityAndSetForceCaseBalancesItsEnergy) {
     TempDir dir;
-    makeParticles(dir);
-    const fs::path casePath = dir / "wall.toml";
-    {
-        std::ofstream out(casePath);
-        out << "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 1.0e-6\n"
-               "viscosity = [0.2, 0.2]\ngravity = [0.0, -2.0e4, 0.0]\n"
-               "[contact]\npenalty = 4.0\n"
-               "[[material]]\nname = \"steel\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
-               "poisson_ratio = 0.3\n"
-               "[[body]]\ngroup = \"bar\"\nmaterial = \"steel\"\nvelocity = [-50.0, 0.0, 0.0]\n"
-               "[[set]]\nname = \"load\"\nforce = [-2000.0, 0.0, 0.0]\n"
-               "[[wall]]\nname = \"anvil\"\npoint = [-0.0005, 0.0, 0.0]\nnormal = [1.0, 0.0, 0.0]\n"
-               "friction = 0.2\n";
-    }
+    const auto r = solveCaseText(
+        dir, "wall.toml",
+        "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 1.0e-6\n"
+        "viscosity = [0.2, 0.2]\ngravity = [0.0, -2.0e4, 0.0]\n"
+        "[contact]\npenalty = 4.0\n" +
+            kSteelBar +
+            "velocity = [-50.0, 0.0, 0.0]\n"
+            "[[set]]\nname = \"load\"\nforce = [-2000.0, 0.0, 0.0]\n"
+            "[[wall]]\nname = \"anvil\"\npoint = [-0.0005, 0.0, 0.0]\nnormal = [1.0, 0.0, 0.0]\n"
+            "friction = 0.2\n");
     const fs::path run = dir / "run";
-    const auto r = runCommand(kSolve + " " + casePath.string() + " -o " + run.string());
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
@@ -239,21 +249,15 @@ TEST(SolveCli, TaylorBarIsBitIdenticalOnOneAndTwoThreads) {
 // far away and moving, has zero force and displacement velocity·t; its name is sanitised.
 TEST(SolveCli, HistoryHasEachWallsForceAndDisplacement) {
     TempDir dir;
-    makeParticles(dir);
-    const fs::path casePath = dir / "floor.toml";
-    {
-        std::ofstream out(casePath);
-        out << "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 2.0e-7\n"
-               "gravity = [0.0, -2.0e4, 0.0]\n"
-               "[[material]]\nname = \"steel\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
-               "poisson_ratio = 0.3\n"
-               "[[body]]\ngroup = \"bar\"\nmaterial = \"steel\"\n"
-               "[[wall]]\nname = \"floor\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n"
-               "[[wall]]\nname = \"far wall-2\"\nshape = \"cylinder\"\npoint = [0.0, 0.0, 1.0]\n"
-               "axis = [1.0, 0.0, 0.0]\nradius = 0.1\nvelocity = [0.0, 0.5, 2.0]\n";
-    }
+    const auto r = solveCaseText(
+        dir, "floor.toml",
+        "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 2.0e-7\n"
+        "gravity = [0.0, -2.0e4, 0.0]\n" +
+            kSteelBar +
+            "[[wall]]\nname = \"floor\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n"
+            "[[wall]]\nname = \"far wall-2\"\nshape = \"cylinder\"\npoint = [0.0, 0.0, 1.0]\n"
+            "axis = [1.0, 0.0, 0.0]\nradius = 0.1\nvelocity = [0.0, 0.5, 2.0]\n");
     const fs::path run = dir / "run";
-    const auto r = runCommand(kSolve + " " + casePath.string() + " -o " + run.string());
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
