@@ -2,6 +2,7 @@
 #include "case_config.hpp"
 
 #include <toml++/toml.h>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -215,6 +216,27 @@ SetSpec readSet(const std::string& file, const toml::table& t) {
     return s;
 }
 
+PrecrackSpec readPrecrack(const std::string& file, const toml::table& t, std::size_t index) {
+    TableReader r(file, t, "[[precrack]]", {"name", "corner", "edge1", "edge2"});
+    PrecrackSpec p;
+    p.line = r.line();
+    p.name = r.text("name", "precrack " + std::to_string(index), false);
+    for (const char* key : {"corner", "edge1", "edge2"})
+        if (!r.has(key)) r.fail(nullptr, std::string("missing key '") + key + "' in [[precrack]]");
+    p.corner = r.vector("corner");
+    p.edge1 = r.vector("edge1");
+    p.edge2 = r.vector("edge2");
+    for (const char* key : {"edge1", "edge2"})
+        if ((std::string(key) == "edge1" ? p.edge1 : p.edge2).isZero(0.0))
+            r.fail(t.get(key), std::string("'") + key + "' in [[precrack]] must not be zero");
+    // Parallel edges span no plane (relative to the edges' lengths, so units do not matter).
+    if (p.edge1.cross(p.edge2).norm() <= 1e-9 * p.edge1.norm() * p.edge2.norm())
+        r.fail(t.get("edge2"), "'edge1' and 'edge2' in [[precrack]] '" + p.name +
+                                   "' are parallel: they must "
+                                   "span the crack's plane");
+    return p;
+}
+
 }  // namespace
 
 CaseConfig readCaseFile(const std::filesystem::path& path) {
@@ -232,11 +254,11 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
     for (const auto& [key, node] : root) {
         const std::string k(key.str());
         if (k != "run" && k != "material" && k != "body" && k != "set" && k != "wall" &&
-            k != "contact")
+            k != "contact" && k != "precrack")
             throw InputError(file + ":" + std::to_string(node.source().begin.line) +
                              ": unknown table '" + k +
                              "' (expected [run], [contact], [[material]], [[body]], [[set]], "
-                             "[[wall]])");
+                             "[[wall]], [[precrack]])");
     }
     readRun(file, root, c);
     readContact(file, root, c);
@@ -282,6 +304,9 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
 
     if (const toml::array* sets = arrayOfTables(file, root, "set"))
         for (const toml::node& n : *sets) c.sets.push_back(readSet(file, *n.as_table()));
+    if (const toml::array* cracks = arrayOfTables(file, root, "precrack"))
+        for (const toml::node& n : *cracks)
+            c.precracks.push_back(readPrecrack(file, *n.as_table(), c.precracks.size()));
     return c;
 }
 

@@ -46,6 +46,17 @@ struct WallSpec {
     int line = 0;
 };
 
+/// [[precrack]]: an initial crack, the parallelogram corner + s·edge1 + t·edge2 (s, t ∈ [0, 1],
+/// reference configuration): the bonds crossing it start broken (libgsph/failure/
+/// brittle_bonds.hpp). Particles on its plane count on the side of edge1 × edge2.
+struct PrecrackSpec {
+    std::string name;
+    Vec3 corner = Vec3::Zero();  ///< [m]
+    Vec3 edge1 = Vec3::Zero();   ///< [m]
+    Vec3 edge2 = Vec3::Zero();   ///< [m]
+    int line = 0;
+};
+
 /// [contact]: the penalty law of libgsph/contact/penalty_contact.hpp.
 struct ContactSpec {
     bool betweenBodies = true;
@@ -74,6 +85,7 @@ struct CaseConfig {
     std::vector<MaterialSpec> materials;
     std::vector<BodySpec> bodies;
     std::vector<SetSpec> sets;
+    std::vector<PrecrackSpec> precracks;
 };
 
 /// Parses and validates a case file. Throws InputError "FILE:LINE: ..." on any fault.

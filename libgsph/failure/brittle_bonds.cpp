@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "failure/brittle_bonds.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
 #include <string>
@@ -12,8 +13,64 @@
 
 namespace gsph {
 
-BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle)
-    : ref_(ref), stretch_(std::move(stretchByParticle)) {
+bool segmentCrossesPatch(const CrackPatch& patch, const Vec3& from, const Vec3& to) {
+    const Vec3 normal = patch.edge1.cross(patch.edge2);
+    const bool fromAbove = normal.dot(from - patch.corner) >= 0.0;
+    const bool toAbove = normal.dot(to - patch.corner) >= 0.0;
+    if (fromAbove == toAbove) return false;
+    // Evaluate from the end below the plane, so that (from, to) and (to, from) give the same bits.
+    const Vec3& p = fromAbove ? to : from;
+    const Vec3& q = fromAbove ? from : to;
+    const Vec3 d = q - p;
+    const double t = normal.dot(patch.corner - p) / normal.dot(d);
+    const Vec3 r = p + t * d - patch.corner;
+    // r = s edge1 + u edge2 in the patch's plane: the 2×2 Gram system.
+    const double g11 = patch.edge1.squaredNorm(), g12 = patch.edge1.dot(patch.edge2),
+                 g22 = patch.edge2.squaredNorm();
+    const double det = g11 * g22 - g12 * g12;
+    const double r1 = patch.edge1.dot(r), r2 = patch.edge2.dot(r);
+    const double s = (g22 * r1 - g12 * r2) / det, u = (g11 * r2 - g12 * r1) / det;
+    return s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0;
+}
+
+Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patches,
+                       std::vector<std::uint8_t>& bondIntact) {
+    const PairList& P = ref.pairs;
+    if (bondIntact.size() != static_cast<std::size_t>(P.pairs()))
+        throw InputError("initial cracks: " + std::to_string(bondIntact.size()) +
+                         " bond flags for " + std::to_string(P.pairs()) + " pairs");
+    for (const CrackPatch& patch : patches) {
+        const Vec3 normal = patch.edge1.cross(patch.edge2);
+        if (!(normal.squaredNorm() > 0.0) || !std::isfinite(normal.squaredNorm()))
+            throw InputError("initial crack: its edges must span a plane (edge1 × edge2 ≠ 0)");
+    }
+    // Per CSR entry, from the reference positions alone: a and b decide alike. Each particle
+    // writes only its own entries; fresh pairs are counted as entries (a, b) with a < b, as
+    // BrittleBonds::brokenPairs counts them.
+    std::vector<Index> fresh(static_cast<std::size_t>(ref.size()), 0);
+    parallelFor(ref.size(), [&](Index a) {
+        const Vec3& Xa = ref.X[static_cast<std::size_t>(a)];
+        for (Index k = P.begin(a); k < P.end(a); ++k) {
+            const auto ik = static_cast<std::size_t>(k);
+            if (bondIntact[ik] == 0) continue;
+            const Index b = P.neighbor[ik];
+            const Vec3& Xb = ref.X[static_cast<std::size_t>(b)];
+            for (const CrackPatch& patch : patches)
+                if (segmentCrossesPatch(patch, Xa, Xb)) {
+                    bondIntact[ik] = 0;
+                    if (b > a) ++fresh[static_cast<std::size_t>(a)];
+                    break;
+                }
+        }
+    });
+    Index broken = 0;
+    for (Index f : fresh) broken += f;
+    return broken;
+}
+
+BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle,
+                           bool precracked)
+    : ref_(ref), stretch_(std::move(stretchByParticle)), enabled_(precracked) {
     if (stretch_.size() != static_cast<std::size_t>(ref.size()))
         throw InputError("bond stretch limits: " + std::to_string(stretch_.size()) +
                          " values for " + std::to_string(ref.size()) + " particles");

@@ -26,6 +26,13 @@
 // θ-gradient of v_{n+½} over the bonds. Only particles that lost a bond contribute; the
 // negative of that change is the energy the broken pairs take out of the motion, booked as
 // fracture energy. (The overset band's difference form is outside this identity.)
+//
+// Initial cracks (a sharp notch, docs/theory.md "Initial cracks"): the bonds of every pair whose
+// reference segment X_a → X_b crosses a planar patch start broken (breakBondsAcross); attach()
+// then derives G, damaged and detached exactly as after a break. A reference position on the
+// patch's plane counts on the side its normal edge1 × edge2 points to, so a row of particles
+// lying on the notch line belongs to one face, and the decision depends on the pair, not on
+// which side evaluates it.
 #pragma once
 
 #include <cstdint>
@@ -41,6 +48,26 @@ struct BondBreak {
     Index pairs = 0;              ///< pairs (a < b) broken by the call
     double releasedEnergy = 0.0;  ///< ½Δt Σ_a (K^old:∇v^old − K^new:∇v^new) [J] (see above)
 };
+
+/// A planar crack present at t = 0: the parallelogram corner + s·edge1 + t·edge2, s, t ∈ [0, 1]
+/// (reference configuration; edge1 × edge2 ≠ 0 is its normal).
+struct CrackPatch {
+    Vec3 corner = Vec3::Zero();
+    Vec3 edge1 = Vec3::UnitX();
+    Vec3 edge2 = Vec3::UnitZ();
+};
+
+/// True when the reference segment from `from` to `to` crosses the patch: the ends lie on
+/// opposite sides of its plane (a point on the plane is on the side of the normal) and the
+/// segment meets the plane inside the parallelogram (edges included). Symmetric in its ends.
+bool segmentCrossesPatch(const CrackPatch& patch, const Vec3& from, const Vec3& to);
+
+/// Clears bondIntact of every CSR pair (a, b) whose reference segment crosses one of the
+/// patches (both directions of a pair alike); returns the pairs newly broken, counted as
+/// entries (a, b) with a < b like BrittleBonds::brokenPairs. Throws InputError on a degenerate
+/// patch (edge1 × edge2 = 0) or a flag array that does not match the pairs.
+Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patches,
+                       std::vector<std::uint8_t>& bondIntact);
 
 /// What the pair loops need of the bonds: null pointers when no body can break.
 struct BondView {
@@ -62,8 +89,10 @@ class BrittleBonds {
     static constexpr double kDetachedCorrection = 1e-3;
 
     /// `stretchByParticle`: εmax of each particle's body (0 = unbreakable), from the body ranges.
-    /// Throws InputError on a negative or non-finite εmax.
-    BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle);
+    /// `precracked`: the state may start with broken bonds (initial cracks), so the bonds are
+    /// tracked even when no body can break. Throws InputError on a negative or non-finite εmax.
+    BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle,
+                 bool precracked = false);
 
     bool enabled() const { return enabled_; }
 

@@ -202,7 +202,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       bodies_(std::move(bodies)),
       constraints_(std::move(constraints)),
       options_(options),
-      bonds_(ref, stretchByParticle(ref, options_.bondStretch)) {
+      bonds_(ref, stretchByParticle(ref, options_.bondStretch), !options_.precracks.empty()) {
     if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
         throw InputError("CFL number must lie in (0, 1], got " + std::to_string(options_.cfl));
     if (options_.hourglass < 0.0) throw InputError("hourglass coefficient must be ≥ 0");
@@ -437,6 +437,8 @@ double VelocityVerlet::stableTimeStep(const State& state) const {
 }
 
 void VelocityVerlet::initialize(State& state) {
+    // Initial cracks break their bonds before anything reads them; a resumed state carries them.
+    if (!options_.precracks.empty()) breakBondsAcross(ref_, options_.precracks, state.bondIntact);
     bonds_.attach(state);
     applyConstraints(state, state.time);
     parallelFor(ref_.size(), [&](Index a) { packKinematics(state, a); });

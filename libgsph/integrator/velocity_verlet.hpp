@@ -46,6 +46,9 @@ struct SolverOptions {
     /// εmax of brittle bonds per body id (failure/brittle_bonds.hpp); a body without an entry,
     /// or with 0, never breaks.
     std::vector<double> bondStretch;
+    /// Initial cracks: the bonds crossing any of these patches start broken (at initialize(),
+    /// failure/brittle_bonds.hpp), in any body, breakable or not.
+    std::vector<CrackPatch> precracks;
     /// > 0: a stable Δt below this fraction of the run's first Δt (State::initialDt) stops the
     /// run with NumericalError naming the particle that limits it (0 = only Δt ≤ 0 or NaN).
     double minTimeStepRatio = 0.0;

@@ -97,6 +97,9 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"contact_negative_penalty.toml", "'penalty' in [contact] must be > 0", 16},
         {"contact_unknown_key.toml", "unknown key 'stiffness' in [contact]", 16},
         {"gravity_not_three.toml", "'gravity' in [run] must be a list of 3 numbers", 4},
+        {"precrack_parallel_edges.toml", "'edge1' and 'edge2' in [[precrack]] 'notch' are parallel",
+         19},
+        {"precrack_missing_corner.toml", "missing key 'corner' in [[precrack]]", 15},
     };
     std::size_t fixtures = 0;
     for (const auto& e : fs::directory_iterator(kSource / "tests/data/bad_cases"))

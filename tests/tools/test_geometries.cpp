@@ -475,7 +475,7 @@ TEST(Geometries, NotchedPlate) {
 // cannot step below ~ε|X|/h ≈ 2e-14 cells; an absolute 1e-14 stalled them (a MeshError below
 // h ≈ 1.4 mm). Every overset entry must reproduce its X in the other space.
 TEST(Geometries, KalthoffWinklerConvertsWithFineCellsFarFromTheOrigin) {
-    const std::string path = geometry("kalthoff_winkler.geo");
+    const std::string path = geometry("kalthoff_winkler_slotted.geo");
     const Conversion c = convert(path, {{"h", 0.001}});
     validateParticleFile(c.particles);
     EXPECT_GT(c.particles.size(), 40000);

@@ -20,6 +20,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+
+#include "core/error.hpp"
 #include "failure/brittle_bonds.hpp"
 #include "io/snapshot.hpp"
 #include "kinematics/deformation_gradient.hpp"
@@ -213,6 +216,124 @@ TEST(BrittleBonds, EnergyBalanceOfABarPulledApartBooksTheFractureEnergy) {
     EXPECT_EQ(intact.broken, 0);
     EXPECT_EQ(intact.energy.fractureEnergy, 0.0);
     EXPECT_LT(intact.worstImbalance, 1e-2 * intact.energy.boundaryWork);
+}
+
+// Initial cracks (issue #9): the bonds whose reference segment crosses a planar patch start
+// broken. Brute force: a pair crosses the patch when its segment X_a + t (X_b − X_a) meets the
+// patch's plane at t ∈ [0, 1] inside the parallelogram, solved here as one 3×3 system
+// [edge1 edge2 −(X_b − X_a)] (s, u, t) = X_a − corner (planes placed off every particle, so no
+// end lies on one). A partial patch (half the section, tilted) and a full one on a graded block.
+TEST(BrittleBonds, PrecrackBreaksExactlyTheBondsCrossingItsPatch) {
+    const Reference ref = testing::builtReference(
+        gradedBoxMap(Vec3(1.0, 0.6, 0.4),
+                     {AxisGrading{AxisGrading::Kind::OneSided, 1.5}, AxisGrading{}, AxisGrading{}}),
+        3, {12, 8, 5});
+    const std::vector<CrackPatch> patches = {
+        // Tilted, across z, from y = −0.1 to y = 0.33: a notch ending inside the block.
+        {Vec3(0.4713, -0.1, -0.05), Vec3(0.0517, 0.43, 0.0), Vec3(0.0, 0.0, 0.5)},
+        // A second, normal to z, over part of x and y.
+        {Vec3(0.6, 0.05, 0.2117), Vec3(0.3, 0.0, 0.0), Vec3(0.0, 0.35, 0.0)},
+    };
+    const auto crosses = [&](const Vec3& Xa, const Vec3& Xb) {
+        for (const CrackPatch& p : patches) {
+            Mat3 A;
+            A << p.edge1, p.edge2, -(Xb - Xa);
+            // A segment parallel to the plane never crosses it.
+            if (std::abs(A.determinant()) <=
+                1e-12 * p.edge1.norm() * p.edge2.norm() * (Xb - Xa).norm())
+                continue;
+            const Vec3 sut = A.fullPivLu().solve(Xa - p.corner);
+            if (sut.minCoeff() >= 0.0 && sut.maxCoeff() <= 1.0) return true;
+        }
+        return false;
+    };
+    Index expected = 0;
+    for (Index a = 0; a < ref.size(); ++a)
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
+            const Index b = ref.pairs.neighbor[static_cast<std::size_t>(k)];
+            if (b > a &&
+                crosses(ref.X[static_cast<std::size_t>(a)], ref.X[static_cast<std::size_t>(b)]))
+                ++expected;
+        }
+    std::vector<std::uint8_t> intact(static_cast<std::size_t>(ref.pairs.pairs()), 1);
+    const Index broken = breakBondsAcross(ref, patches, intact);
+    // Both directions of every pair agree, and the flags are exactly the brute force's.
+    for (Index a = 0; a < ref.size(); ++a)
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
+            const Index b = ref.pairs.neighbor[static_cast<std::size_t>(k)];
+            const bool cut =
+                crosses(ref.X[static_cast<std::size_t>(a)], ref.X[static_cast<std::size_t>(b)]);
+            ASSERT_EQ(intact[static_cast<std::size_t>(k)] == 0, cut) << "pair " << a << "–" << b;
+        }
+    std::printf("[bonds] precrack: %d pairs cut, brute force %d\n", broken, expected);
+    EXPECT_GT(expected, 100);
+    EXPECT_EQ(broken, expected);
+    EXPECT_EQ(static_cast<std::size_t>(broken), brokenBonds(ref.pairs, intact).size());
+    // Applying the patches again breaks nothing new.
+    EXPECT_EQ(breakBondsAcross(ref, patches, intact), 0);
+    EXPECT_THROW(
+        breakBondsAcross(ref, {{Vec3::Zero(), Vec3::UnitX(), 2.0 * Vec3::UnitX()}}, intact),
+        InputError);
+}
+
+// A graded block cut through by a precrack at x = 0.5 (unbreakable bonds: εmax = 0), its two
+// halves given opposite velocities ±v0 along x. At t = 0, F = I on both faces of the cut; then
+// the halves fly apart as rigid bodies: no force acts across the patch, so every velocity stays
+// ±v0 and every stress zero, and no particle is detached.
+TEST(BrittleBonds, PrecrackedBlockPulledApartCarriesNoForceAcrossThePatch) {
+    const ElasticConstants steel(7800.0, 200e9, 0.3);
+    const double v0 = 5.0;
+    SolverOptions options;
+    options.viscosity = {1.0, 1.0};
+    options.hourglass = 0.1;
+    options.precracks = {{Vec3(0.5, -0.1, -0.1), Vec3(0.0, 0.0, 0.6), Vec3(0.0, 0.8, 0.0)}};
+    Simulation sim(latticeReference(gradedBoxMap(Vec3(1.0, 0.6, 0.4),
+                                                 {AxisGrading{AxisGrading::Kind::OneSided, 1.5},
+                                                  AxisGrading{}, AxisGrading{}}),
+                                    3, {12, 8, 5}, steel.density, 1.2),
+                   {HypoElastic(steel)}, options);
+    const Reference& ref = sim.reference();
+    sim.setVelocity([&](const Vec3& X) { return Vec3(X[0] < 0.5 ? -v0 : v0, 0.0, 0.0); });
+    sim.start();
+    const BrittleBonds& bonds = sim.integrator().bonds();
+    ASSERT_TRUE(bonds.enabled());
+    double worstF = 0.0;
+    Index damaged = 0;
+    for (Index a = 0; a < ref.size(); ++a) {
+        ASSERT_FALSE(bonds.detached(a)) << "particle " << a;
+        if (!bonds.view(sim.state()).allIntact(a, a + 1)) ++damaged;
+        worstF = std::max(
+            worstF,
+            (sim.state().F[static_cast<std::size_t>(a)] - Mat3::Identity()).cwiseAbs().maxCoeff());
+    }
+    // Every bond across x = 0.5 and no other: the brute force of the test above, in one line.
+    Index across = 0;
+    for (Index a = 0; a < ref.size(); ++a)
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
+            const Index b = ref.pairs.neighbor[static_cast<std::size_t>(k)];
+            if (b > a && (ref.X[static_cast<std::size_t>(a)][0] - 0.5) *
+                                 (ref.X[static_cast<std::size_t>(b)][0] - 0.5) <
+                             0.0)
+                ++across;
+        }
+    EXPECT_EQ(bonds.brokenPairs(), across);
+    EXPECT_LT(worstF, 1e-12);
+    for (int i = 0; i < 50; ++i) sim.step();
+    double worstV = 0.0, worstStress = 0.0;
+    for (Index a = 0; a < ref.size(); ++a) {
+        const auto ia = static_cast<std::size_t>(a);
+        const Vec3 expected(ref.X[ia][0] < 0.5 ? -v0 : v0, 0.0, 0.0);
+        worstV = std::max(worstV, (sim.state().v[ia] - expected).norm());
+        worstStress = std::max(worstStress, sim.state().cauchy[ia].cwiseAbs().maxCoeff());
+    }
+    std::printf(
+        "[bonds] precracked block: %d pairs cut, %d damaged particles; F = I to %.1e at t = 0; "
+        "after 50 steps (%.2e s): |v − v0| ≤ %.1e m/s, |σ| ≤ %.1e Pa\n",
+        bonds.brokenPairs(), damaged, worstF, sim.state().time, worstV, worstStress);
+    EXPECT_GT(sim.state().time, 0.0);
+    EXPECT_LT(worstV, 1e-9 * v0);
+    EXPECT_LT(worstStress, 1e-12 * steel.youngsModulus);  // round-off of F = I, times E
+    EXPECT_EQ(bonds.brokenPairs(), across);               // εmax = 0: nothing else breaks
 }
 
 }  // namespace
