@@ -1,6 +1,10 @@
-// Kalthoff–Winkler edge-cracked plate impact (structured hex blocks, the full plate).
+// Kalthoff–Winkler edge-cracked plate impact with the notches cut as slots (structured hex
+// blocks in four generalized spaces, overset). Superseded for the case by kalthoff_winkler.geo
+// (one space, sharp notches as [[precrack]]s: docs/theory.md "Initial cracks"); kept as the
+// overset conversion test of a plate with fine cells far from the origin
+// (Geometries.KalthoffWinklerConvertsWithFineCellsFarFromTheOrigin).
 //
-//   gmsh -3 kalthoff_winkler.geo                          -> kalthoff_winkler.msh
+//   gmsh -3 kalthoff_winkler_slotted.geo                   -> kalthoff_winkler_slotted.msh
 //   gsph-preproc kalthoff_winkler.geo -o kw.h5             (GSPH: graded, one particle per hex)
 //   gsph-preproc kalthoff_winkler.geo -o kw_u.h5 --lattice 0.002   (uniform layout, same geometry)
 //
