@@ -100,14 +100,18 @@ TEST(Checkpoint, RoundTripKeepsEveryArrayAndScalarBitForBit) {
 }
 
 // A bar of Johnson–Cook steel with damage and brittle bonds, one end pulled fast, the other
-// end struck: plastic flow, failing particles and broken bonds.
-std::unique_ptr<Simulation> makeRun(bool plastic = true) {
+// end struck: plastic flow, failing particles and broken bonds; `precracked`: a notch (an
+// initial crack across half the section at x = 0.1) besides.
+std::unique_ptr<Simulation> makeRun(bool plastic = true, bool precracked = false) {
     const Material steel = testing::softFailingSteel();
     const ElasticConstants e(7800.0, 200e9, 0.3);
     SolverOptions options;
     options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;
     options.bondStretch = {0.004};
+    if (precracked)
+        options.precracks = {
+            {Vec3(0.1, -0.01, -0.01), Vec3(0.0, 0.035, 0.0), Vec3(0.0, 0.0, 0.07)}};
     auto sim = std::make_unique<Simulation>(
         testing::builtReference(gradedBoxMap(Vec3(0.2, 0.05, 0.05), {}), 3, {24, 6, 6}),
         std::vector<Material>{plastic ? steel : Material(HypoElastic(e))}, options);
@@ -142,6 +146,25 @@ TEST(Checkpoint, ResumedSimulationStepsBitIdentically) {
     EXPECT_GT(a->state().ledger.plasticWork, 0.0);
     EXPECT_GT(a->state().ledger.damageDissipation, 0.0);
     EXPECT_NE(a->state().ledger.fractureEnergy, 0.0);
+}
+
+// The initial cracks' bonds are state: a resumed run carries them from the checkpoint (the
+// patches are not applied again) and steps bit-identically.
+TEST(Checkpoint, ResumedPrecrackedSimulationStepsBitIdentically) {
+    const auto a = makeRun(true, true);
+    a->start();
+    const long initial = brokenEntries(a->state());
+    for (int i = 0; i < 80; ++i) a->step();
+    const auto b = makeRun(true, true);
+    for (int i = 0; i < 30; ++i) b->step();
+    test::TempDir dir;
+    writeCheckpoint(dir / "c.h5", b->state(), {}, {});
+    const auto resumed = makeRun(true, true);
+    resumed->resume(readCheckpoint(dir / "c.h5").state, "c.h5");
+    for (int i = 0; i < 50; ++i) resumed->step();
+    EXPECT_EQ(differences(resumed->state(), a->state()), "");
+    EXPECT_GT(initial, 0);
+    EXPECT_GT(brokenEntries(a->state()), initial);
 }
 
 TEST(Checkpoint, ResumeRefusesAStateOfAnotherShape) {
