@@ -30,7 +30,11 @@ bool segmentCrossesPatch(const CrackPatch& patch, const Vec3& from, const Vec3& 
     const double det = g11 * g22 - g12 * g12;
     const double r1 = patch.edge1.dot(r), r2 = patch.edge2.dot(r);
     const double s = (g22 * r1 - g12 * r2) / det, u = (g11 * r2 - g12 * r1) / det;
-    return s >= 0.0 && s <= 1.0 && u >= 0.0 && u <= 1.0;
+    // Edges included to kPatchEdgeTolerance: a bond crossing exactly on an edge (a notch tip on
+    // a cell face, where the bonds of mirror-image pairs meet) is cut whatever the round-off
+    // of the positions, so that layouts with the same positions cut the same bonds.
+    const double tol = kPatchEdgeTolerance;
+    return s >= -tol && s <= 1.0 + tol && u >= -tol && u <= 1.0 + tol;
 }
 
 Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patches,

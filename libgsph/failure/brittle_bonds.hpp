@@ -57,9 +57,13 @@ struct CrackPatch {
     Vec3 edge2 = Vec3::UnitZ();
 };
 
+/// Patch coordinates s, t within this of [0, 1] count as on the patch (edges included robustly).
+inline constexpr double kPatchEdgeTolerance = 1e-9;
+
 /// True when the reference segment from `from` to `to` crosses the patch: the ends lie on
 /// opposite sides of its plane (a point on the plane is on the side of the normal) and the
-/// segment meets the plane inside the parallelogram (edges included). Symmetric in its ends.
+/// segment meets the plane inside the parallelogram, edges included to kPatchEdgeTolerance (in
+/// the patch coordinates s, t). Symmetric in its ends.
 bool segmentCrossesPatch(const CrackPatch& patch, const Vec3& from, const Vec3& to);
 
 /// Clears bondIntact of every CSR pair (a, b) whose reference segment crosses one of the

@@ -276,6 +276,29 @@ TEST(BrittleBonds, PrecrackBreaksExactlyTheBondsCrossingItsPatch) {
         InputError);
 }
 
+// A notch whose tip lies on a cell face: mirror-image bonds cross its plane exactly on the tip
+// edge. They are cut (edges included), and positions perturbed by round-off (1e-12 of the
+// spacing, as two converters of the same layout give) cut the same bonds.
+TEST(BrittleBonds, PrecrackEdgeOnACellFaceCutsTheSameBondsDespiteRoundOff) {
+    Reference ref = testing::builtReference(gradedBoxMap(Vec3(1.0, 0.8, 0.4), {}), 3, {10, 8, 4});
+    const std::vector<CrackPatch> notch = {
+        {Vec3(-0.05, 0.4, -0.05), Vec3(0.0, 0.0, 0.5), Vec3(0.55, 0.0, 0.0)}};  // tip x = 0.5
+    const std::vector<CrackPatch> shorter = {
+        {Vec3(-0.05, 0.4, -0.05), Vec3(0.0, 0.0, 0.5), Vec3(0.54, 0.0, 0.0)}};  // tip x = 0.49
+    const auto cut = [&](const std::vector<CrackPatch>& patches) {
+        std::vector<std::uint8_t> intact(static_cast<std::size_t>(ref.pairs.pairs()), 1);
+        return breakBondsAcross(ref, patches, intact);
+    };
+    const Index exact = cut(notch);
+    EXPECT_GT(exact, cut(shorter));  // the bonds crossing at x = 0.5 itself are cut
+    for (std::size_t a = 0; a < ref.X.size(); ++a)
+        ref.X[a] += 1e-13 * Vec3(std::sin(3.0 * static_cast<double>(a)),
+                                 std::cos(5.0 * static_cast<double>(a)), 0.0);
+    std::printf("[bonds] notch tip on a cell face: %d pairs cut, %d after round-off\n", exact,
+                cut(notch));
+    EXPECT_EQ(cut(notch), exact);
+}
+
 // A graded block cut through by a precrack at x = 0.5 (unbreakable bonds: εmax = 0), its two
 // halves given opposite velocities ±v0 along x. At t = 0, F = I on both faces of the cut; then
 // the halves fly apart as rigid bodies: no force acts across the patch, so every velocity stays
