@@ -22,6 +22,8 @@
 //      lines, so no particle sits on a notch plane); [-y1, 0] and [0, y1] graded from h at
 //      ±y1 to `coarsen` h at the middle line y = 0, where no crack runs;
 //   z: nz cells through the thickness (default: T/h rounded, as the uniform layout has).
+// `coarsenX`, `coarsenY` (0: `coarsen`) grade one direction only (docs/theory.md: the crack
+// path's sensitivity to the grading).
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m).
 // Body: Physical Volume "plate". Set: "impact" (x = 0, |y| ≤ d/2).
@@ -36,6 +38,8 @@ DefineConstant[
   a = {0.005, Name "Parameters/a"},         // fine band before the tips and below the notches [m],
                                             // rounded to whole cells of h
   coarsen = {3, Name "Parameters/coarsen"}, // cell size at x = 0 and at y = 0, in h
+  coarsenX = {0, Name "Parameters/coarsenX"}, // cell size at x = 0 only (0: coarsen)
+  coarsenY = {0, Name "Parameters/coarsenY"}, // cell size at y = 0 only (0: coarsen)
   nz = {0, Name "Parameters/nz"},           // cells through the thickness (0: Round(T/h))
   refine = {1, Name "Parameters/refine"}    // divides h (convergence studies)
 ];
@@ -49,10 +53,12 @@ ys[] = {-Y, -d / 2, -y1, 0, y1, d / 2, Y};
 
 // Cells per segment: graded runs of n cells from hr to coarsen hr (n from the mean cell, a
 // geometric progression of ratio r per cell); the others as close to hr as a whole number allows.
-nGraded = Max(2, Round(2 * x1 / (hr * (1 + coarsen))));
-rGradedX = coarsen^(1 / (nGraded - 1));
-nGradedY = Max(2, Round(2 * y1 / (hr * (1 + coarsen))));
-rGradedY = coarsen^(1 / (nGradedY - 1));
+cx = coarsenX > 0 ? coarsenX : coarsen;
+cy = coarsenY > 0 ? coarsenY : coarsen;
+nGraded = Max(2, Round(2 * x1 / (hr * (1 + cx))));
+rGradedX = cx^(1 / (nGraded - 1));
+nGradedY = Max(2, Round(2 * y1 / (hr * (1 + cy))));
+rGradedY = cy^(1 / (nGradedY - 1));
 nxs[] = {nGraded, na, Max(1, Round((W - c) / hr))};
 nys[] = {Max(1, Round((Y - d / 2) / hr)), na, nGradedY,
          nGradedY, na, Max(1, Round((Y - d / 2) / hr))};
