@@ -85,6 +85,8 @@ struct BondView {
         return true;
     }
     bool holds(Index pair) const { return intact == nullptr || intact[pair] != 0; }
+    /// True when particle a keeps all its bonds (its interface weight corrections apply).
+    bool keepsAll(Index a) const { return damaged == nullptr || damaged[a] == 0; }
 };
 
 class BrittleBonds {

@@ -17,8 +17,7 @@ static_assert(kMinStencilRun >= kLanesOf<Lanes4>, "a stencil block holds a 4-lan
 // directly so that the compiler sees plain contiguous streams.
 struct ForceView {
     std::array<const double*, 9> K, N, F;
-    const Mat3* G;             // per particle (bonds may have changed it)
-    const std::uint8_t* band;  // overset band flags, or null
+    const Mat3* G;  // per particle (bonds may have changed it)
     std::array<const double*, 3> x, v, X;
     const double *h, *c, *rho, *V;
     const KernelEntry* table;
@@ -118,7 +117,7 @@ template <bool Viscous, bool Hourglass, class L, class Load>
 }
 
 // The force of particle c from its pair sums: f_c = fStress − (N_c Σqw + Σ q N_b w)
-// + f_hourglass, fStress = K_c Σw + Σ K_b w (DESIGN §4) or the band's difference form.
+// + f_hourglass, fStress = K_c Σw + Σ K_b w (DESIGN §4).
 template <bool Viscous, bool Hourglass>
 void finishParticle(const StressFactors& sf, Index c, const Vec3& fStress, const Vec3& sumQW,
                     const Vec3& fN, const Vec3& fh, std::vector<Vec3>& force, ForceParts& parts) {
@@ -198,6 +197,9 @@ GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactor
 }
 
 // The general path: particle c over its CSR list, the same pair formulas one pair at a time.
+// Pair weights carry the interface corrections (overset/interface_weights.hpp) of particles
+// that keep all their bonds: c's own on its pairs, b's on the transposed terms (the mirror's
+// for a same-space pair, b's own list entry for a pair across spaces).
 template <bool Viscous, bool Hourglass>
 void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleFields& pf,
                       const StressFactors& sf, const BondView& bonds, Index c,
@@ -208,19 +210,23 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
     Vec3 fh = Vec3::Zero();
     const Vec3 xc = pf.x[ic], vc = pf.v[ic], Xc = pf.X[ic];
     const Mat3 Fc = pf.F[ic];
-    const bool band = in.band != nullptr && in.band[ic] != 0;
-    const Mat3& Gc = in.G[ic];
+    const Vec3* own = bonds.keepsAll(c) ? ref.pairCorrections(c) : nullptr;
+    const Vec3* mirror = ref.mirrorCorrections(c);
     for (Index k = P.begin(c); k < P.end(c); ++k) {
         if (!bonds.holds(k)) continue;
         const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
         const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];
         // A pair across spaces has no mirror: its transposed term comes from b's list below.
         const bool across = ref.space[b] != ref.space[ic];
-        sumW += e.gradW;
-        if (band)
-            fK.noalias() += sf.P[b] * (Gc * e.gradW);  // Σ ω_b P(b) g_cb
-        else if (!across)
-            fK.noalias() += sf.K[b] * e.gradW;
+        const std::size_t slot = static_cast<std::size_t>(k - P.begin(c));
+        sumW += own != nullptr ? Vec3(e.gradW + own[slot]) : e.gradW;
+        if (!across) {
+            // −K_b w_bc with w_bc = −w_cb + (the mirror's correction)
+            if (mirror != nullptr && bonds.keepsAll(static_cast<Index>(b)))
+                fK.noalias() += sf.K[b] * (e.gradW - mirror[slot]);
+            else
+                fK.noalias() += sf.K[b] * e.gradW;
+        }
         const Vec3 xcb = xc - pf.x[b];
         if constexpr (Viscous) {
             const double q =
@@ -242,9 +248,14 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
          !ref.crossOffset.empty() && slot < ref.crossOffset[ic + 1]; ++slot) {
         const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
         if (!bonds.holds(k)) continue;
-        const auto b = static_cast<std::size_t>(ref.crossOwner[static_cast<std::size_t>(slot)]);
+        const Index owner = ref.crossOwner[static_cast<std::size_t>(slot)];
+        const auto b = static_cast<std::size_t>(owner);
         const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];  // w_bc
-        if (!band) fK.noalias() -= sf.K[b] * e.gradW;
+        const Vec3* ownerCorrection = bonds.keepsAll(owner) ? ref.pairCorrections(owner) : nullptr;
+        if (ownerCorrection != nullptr)
+            fK.noalias() -= sf.K[b] * (e.gradW + ownerCorrection[k - P.begin(owner)]);
+        else
+            fK.noalias() -= sf.K[b] * e.gradW;
         const Vec3 xbc = pf.x[b] - xc;
         if constexpr (Viscous) {
             const double q =
@@ -258,7 +269,7 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
             fh -= 0.5 * hourglassPairForce(in.alphaE, pf.F[b], Fc, Xc - pf.X[b], -xbc, weight);
         }
     }
-    const Vec3 fStress = band ? Vec3(in.V[ic] * fK - sf.K[ic] * sumW) : Vec3(sf.K[ic] * sumW + fK);
+    const Vec3 fStress = sf.K[ic] * sumW + fK;
     finishParticle<Viscous, Hourglass>(sf, c, fStress, sumQW, fN, fh, force, parts);
 }
 
@@ -293,21 +304,13 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds,
                    const Mat3* G) {
-    const ForceView in{components(factors.K),
-                       components(factors.N),
-                       components(fields.F),
-                       G != nullptr ? G : ref.G.data(),
-                       ref.oversetBand.empty() ? nullptr : ref.oversetBand.data(),
-                       components(fields.x),
-                       components(fields.v),
-                       components(fields.X),
-                       ref.smoothingLength.data(),
-                       factors.soundSpeed.data(),
-                       factors.density.data(),
-                       ref.quadVolume.data(),
-                       ref.pairs.table.data(),
-                       options.viscosity,
-                       options.hourglass * options.youngsModulus};
+    const ForceView in{components(factors.K),     components(factors.N),
+                       components(fields.F),      G != nullptr ? G : ref.G.data(),
+                       components(fields.x),      components(fields.v),
+                       components(fields.X),      ref.smoothingLength.data(),
+                       factors.soundSpeed.data(), factors.density.data(),
+                       ref.quadVolume.data(),     ref.pairs.table.data(),
+                       options.viscosity,         options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();
     const bool hourglass = options.hourglass != 0.0;
     if (viscous && hourglass)

@@ -12,10 +12,10 @@
 // (forces/artificial_viscosity.hpp, forces/hourglass.hpp); the block a particle belongs to is
 // fixed at setup, so results stay independent of the thread count. Allocation-free.
 //
-// Overset (DESIGN §6): a particle of the interface band takes f_c = V_c Σ_b ω_b (P(b) − P(c))
-// g_cb for the stress part; its viscosity and hourglass terms keep the pair forms over its own
-// list (pairs across spaces need not have a mirror, so these two are conservative only up to
-// the band, like the difference form itself).
+// Overset (DESIGN §6): a pair across spaces has no mirror, so its transposed term is read from
+// the other side's list (Reference::crossPair). Near an interface the weights carry the
+// corrections of overset/interface_weights.hpp, so the stress force stays −∂E/∂x (momentum
+// and energy conserved to round-off) and is exact for uniform and linear stress there too.
 #pragma once
 
 #include <vector>
@@ -34,12 +34,9 @@ struct StressFactors {
     Mat3Field N;                     ///< V J F^{-T} G
     std::vector<double> soundSpeed;  ///< c [m/s]
     std::vector<double> density;     ///< ρ0/J [kg/m³]
-    /// P = J σ F^{-T}, kept only with overset (the band's difference form reads it).
-    Mat3Field P;
-    void resize(std::size_t n, bool withP = false) {
+    void resize(std::size_t n) {
         K.resize(n);
         N.resize(n);
-        P.resize(withP ? n : 0);
         soundSpeed.resize(n);
         density.resize(n);
     }
@@ -75,8 +72,8 @@ struct ForceParts {
 /// f_c for the particles of one body, partitioned into `blocks` (built from ref.pairs).
 /// Writes force[c]; parts.* only when that term is on (sized by the caller: ref.size()).
 /// Broken bonds (`bonds`) leave every pair term; a block with a damaged particle takes the
-/// CSR path. Particles of the overset band (ref.oversetBand) take the difference form of
-/// overset/overset_band.hpp with G per particle from `G` (null: ref.G).
+/// CSR path, and so do particles with interface weight corrections (ref.pairCorrections), which
+/// apply while a particle keeps all its bonds. G per particle from `G` (null: ref.G).
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds = {},

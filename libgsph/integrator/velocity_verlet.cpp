@@ -67,7 +67,6 @@ void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const M
     const Mat3 N = s.ref.quadVolume[ia] * C * s.G[ia];
     w.factors.N.set(ia, N);
     w.factors.K.set(ia, point.cauchy * N);
-    if (!w.factors.P.empty()) w.factors.P.set(ia, point.cauchy * C);  // J σ F^{-T}
     w.factors.density[ia] = point.density;
     w.factors.soundSpeed[ia] = model.waveSpeed(point);
     w.fields.F.set(ia, F);
@@ -120,7 +119,6 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     s.state.cauchy[ia].setZero();
     w.factors.N.set(ia, Mat3::Zero());
     w.factors.K.set(ia, Mat3::Zero());
-    if (!w.factors.P.empty()) w.factors.P.set(ia, Mat3::Zero());
     w.factors.density[ia] = point.density;
     w.factors.soundSpeed[ia] = model.waveSpeed(point);
     w.fields.F.set(ia, s.state.F[ia]);
@@ -159,8 +157,8 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
                 continue;
             }
             Mat3 gradX, gradV;
-            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV,
-                           bonds.intact);
+            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV, bonds.intact,
+                           bonds.keepsAll(a) ? s.ref.pairCorrections(a) : nullptr);
             advanceParticle(model, s, a, gradX, gradV);
         }
     }
@@ -187,8 +185,8 @@ std::vector<double> stretchByParticle(const Reference& ref, const std::vector<do
 
 }  // namespace
 
-void StepWorkspace::resize(std::size_t n, bool overset) {
-    factors.resize(n, overset);
+void StepWorkspace::resize(std::size_t n) {
+    factors.resize(n);
     fields.resize(n);
     force.assign(n, Vec3::Zero());
     lengthScale.assign(n, 0.0);
@@ -214,7 +212,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
                 throw InputError("constraint '" + c.name + "' names particle " + std::to_string(a) +
                                  " outside [0, " + std::to_string(ref.size()) + ")");
     const auto n = static_cast<std::size_t>(ref.size());
-    work_.resize(n, !ref.oversetBand.empty());
+    work_.resize(n);
     for (std::size_t a = 0; a < n; ++a) work_.fields.X.set(a, ref.X[a]);
     for (const BodyRange& body : bodies_)
         work_.blocks.push_back(

@@ -89,7 +89,7 @@ struct StepWorkspace {
     std::vector<double> contactFrequency2;  ///< ω_a² bound of the contact springs [1/s²]
     std::vector<Vec3> externalForce;        ///< loads + wall friction: their power is Σ f·v
     std::vector<Vec3> wallForce;            ///< the walls' force on each particle [N]
-    void resize(std::size_t n, bool overset = false);
+    void resize(std::size_t n);
 };
 
 class VelocityVerlet {

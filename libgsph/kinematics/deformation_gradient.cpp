@@ -13,7 +13,7 @@ void deformationGradient(const Reference& ref, const std::vector<Vec3>& x, std::
     const Mat3 outOfPlane = ref.dim.outOfPlane();
     parallelFor(ref.size(), [&](Index a) {
         Mat3 gradX, gradV;
-        thetaGradients(ref, a, x.data(), x.data(), gradX, gradV);
+        thetaGradients(ref, a, x.data(), x.data(), gradX, gradV, nullptr, ref.pairCorrections(a));
         F[static_cast<std::size_t>(a)] =
             gradX * ref.G[static_cast<std::size_t>(a)].transpose() + outOfPlane;
     });

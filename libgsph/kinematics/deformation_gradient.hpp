@@ -23,9 +23,12 @@ namespace gsph {
 
 /// Accumulates the θ-gradients Σ_b ω (x_b − x_a) ⊗ ∇W_ab and the same of v at particle a (the
 /// inner pair loop of the step), as Σ_b x_b ⊗ w_ab − x_a ⊗ Σ_b w_ab with w_ab = ω ∇W_ab.
-/// With `intact` (per CSR pair, failure/brittle_bonds.hpp) only over the bonds that hold.
+/// With `intact` (per CSR pair, failure/brittle_bonds.hpp) only over the bonds that hold; with
+/// `correction` (a's interface weight corrections along its list, Reference::pairCorrections)
+/// w_ab + δw_ab in place of w_ab.
 inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const Vec3* v, Mat3& gradX,
-                           Mat3& gradV, const std::uint8_t* intact = nullptr) {
+                           Mat3& gradV, const std::uint8_t* intact = nullptr,
+                           const Vec3* correction = nullptr) {
     const PairList& P = ref.pairs;
     const auto ia = static_cast<std::size_t>(a);
     Mat3 sx = Mat3::Zero();
@@ -37,7 +40,8 @@ inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const V
     for (Index k = P.begin(a); k < P.end(a); ++k) {
         if (intact != nullptr && intact[k] == 0) continue;
         const auto b = static_cast<std::size_t>(nb[k]);
-        const Vec3& w = table[id[k]].gradW;
+        const Vec3 w = correction != nullptr ? Vec3(table[id[k]].gradW + correction[k - P.begin(a)])
+                                             : table[id[k]].gradW;
         sw += w;
         sx.noalias() += x[b] * w.transpose();
         sv.noalias() += v[b] * w.transpose();

@@ -49,7 +49,7 @@ void markOversetBand(Reference& ref) {
     double hMax = 0.0;
     for (std::size_t a = 0; a < n; ++a)
         if (seed[a] != 0) hMax = std::max(hMax, ref.smoothingLength[a]);
-    const double reach2 = (4.0 * hMax) * (4.0 * hMax);
+    const double reach2 = (2.0 * hMax) * (2.0 * hMax);
     // Breadth-first from every seed through the pairs, each particle remembering the seed it
     // was reached from; serial and in index order, so the band is the same on every run.
     ref.oversetBand.assign(n, 0);
@@ -57,13 +57,13 @@ void markOversetBand(Reference& ref) {
     std::deque<Index> queue;
     for (std::size_t a = 0; a < n; ++a)
         if (seed[a] != 0) {
-            ref.oversetBand[a] = 1;
+            ref.oversetBand[a] = Reference::kBandInterior;
             from[a] = static_cast<Index>(a);
             queue.push_back(static_cast<Index>(a));
         }
-    // Particles whose support reaches a free face of their space's lattice box keep the pairwise
-    // form: it carries the traction σn there, which the difference form lacks. A face is an
-    // interface, not free, when a transient neighbour lies beyond it.
+    // Particles whose support reaches a free face of their space's lattice box: their Piola sum
+    // is the face's traction σn, not zero. A face is an interface, not free, when a transient
+    // neighbour lies beyond it.
     const int dim = ref.dim.value;
     std::vector<std::array<std::array<bool, 2>, 3>> covered(ref.spaces.size());
     for (auto& faces : covered)
@@ -106,13 +106,14 @@ void markOversetBand(Reference& ref) {
         for (Index k = P.begin(a); k < P.end(a); ++k) {
             const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
             if (ref.oversetBand[b] != 0 || (ref.X[b] - origin).squaredNorm() > reach2) continue;
-            ref.oversetBand[b] = 1;
+            ref.oversetBand[b] = Reference::kBandInterior;
             from[b] = from[static_cast<std::size_t>(a)];
             queue.push_back(static_cast<Index>(b));
         }
     }
     for (std::size_t a = 0; a < n; ++a)
-        if (ref.oversetBand[a] != 0 && nearFreeFace(a)) ref.oversetBand[a] = 0;
+        if (ref.oversetBand[a] != 0 && nearFreeFace(a))
+            ref.oversetBand[a] = Reference::kBandNearFreeFace;
     ref.oversetCoupled.assign(n, 0);
     for (std::size_t a = 0; a < n; ++a)
         ref.oversetCoupled[a] = seed[a] != 0 || ref.oversetBand[a] != 0 ? 1 : 0;

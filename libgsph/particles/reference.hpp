@@ -86,12 +86,16 @@ struct Reference {
     std::vector<double> smoothingLength;  ///< physical h = κΔθ (det M)^{1/d} [m] (viscosity)
     std::vector<double> metricCondition;  ///< condition number of M = ∂X/∂θ
     PairList pairs;
-    /// Per particle (computeGeometry, DESIGN §6): 1 if it lies within two kernel supports of
-    /// the coarser side of an overset interface (the *band*: it takes the difference form of
-    /// the force, exact for uniform and linear stress), else 0. Empty without overset.
+    /// Per particle (computeGeometry, DESIGN §6): kBandInterior if it lies within two kernel
+    /// supports of the coarser side of an overset interface (the *band*: its weights are
+    /// corrected so that uniform and linear stress give the exact force there,
+    /// overset/interface_weights.hpp), kBandNearFreeFace if it does but its support reaches a
+    /// free face (its weights are corrected for consistency only: the surface takes up what
+    /// the interface leaves), else 0. Empty without overset.
+    static constexpr std::uint8_t kBandInterior = 1, kBandNearFreeFace = 2;
     std::vector<std::uint8_t> oversetBand;
     bool inOversetBand(Index a) const {
-        return !oversetBand.empty() && oversetBand[static_cast<std::size_t>(a)] != 0;
+        return !oversetBand.empty() && oversetBand[static_cast<std::size_t>(a)] == kBandInterior;
     }
     /// Pairs across spaces need not have a mirror, so the pairwise form takes their transposed
     /// term from the other side's list: for each particle c, the pairs k = (b, c) of other
@@ -103,6 +107,25 @@ struct Reference {
     std::vector<std::uint8_t> oversetCoupled;
     bool isOversetCoupled(Index a) const {
         return !oversetCoupled.empty() && oversetCoupled[static_cast<std::size_t>(a)] != 0;
+    }
+
+    /// Interface weights (overset/interface_weights.hpp): for a particle a with
+    /// correctionBegin[a] ≥ 0, pair k of its list adds pairCorrection[correctionBegin[a] + k −
+    /// pairs.begin(a)] to its table gradW (θ units), and mirrorCorrection at the same slot holds
+    /// the correction of the mirror pair (b, a) of a same-space pair (zero across spaces). Empty
+    /// without an overset band.
+    std::vector<Index> correctionBegin;
+    std::vector<Vec3> pairCorrection, mirrorCorrection;
+    /// Particle a's corrections along its list, or null when it has none.
+    const Vec3* pairCorrections(Index a) const {
+        if (correctionBegin.empty() || correctionBegin[static_cast<std::size_t>(a)] < 0)
+            return nullptr;
+        return pairCorrection.data() + correctionBegin[static_cast<std::size_t>(a)];
+    }
+    const Vec3* mirrorCorrections(Index a) const {
+        if (correctionBegin.empty() || correctionBegin[static_cast<std::size_t>(a)] < 0)
+            return nullptr;
+        return mirrorCorrection.data() + correctionBegin[static_cast<std::size_t>(a)];
     }
 
     Index size() const { return static_cast<Index>(X.size()); }

@@ -8,6 +8,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "overset/interface_weights.hpp"
 #include "overset/overset_band.hpp"
 
 namespace gsph {
@@ -99,6 +100,7 @@ void computeGeometry(Reference& ref) {
                                  static_cast<long>(a));
     }
     markOversetBand(ref);
+    correctInterfaceWeights(ref);
 }
 
 }  // namespace gsph

@@ -6,6 +6,7 @@
 // ω = V / det(∂X/∂θ) of that space — what gsph-preproc stores in /overset.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -71,6 +72,12 @@ inline TwoBlocks twoBlocks(int dim, int n, int ratio, double kappa = 1.2, double
     computeGeometry(a);
     out.ref = std::move(a);
     return out;
+}
+
+/// The plain pairwise form across the interface (a baseline): the corrected interface weights
+/// (overset/interface_weights.hpp) dropped.
+inline void withoutInterfaceCorrections(Reference& ref) {
+    std::fill(ref.correctionBegin.begin(), ref.correctionBegin.end(), Index{-1});
 }
 
 }  // namespace gsph::testing
