@@ -287,17 +287,29 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
 
     if (const toml::array* bodies = arrayOfTables(file, root, "body"))
         for (const toml::node& n : *bodies) {
-            TableReader r(file, *n.as_table(), "[[body]]", {"group", "material", "velocity"});
+            TableReader r(file, *n.as_table(), "[[body]]",
+                          {"group", "material", "velocity", "failed_bonds"});
             BodySpec b;
             b.line = r.line();
             b.group = r.text("group", "", true);
             b.material = r.text("material", "", true);
-            bool known = false;
-            for (const MaterialSpec& m : c.materials) known = known || m.name == b.material;
-            if (!known)
+            const MaterialSpec* material = nullptr;
+            for (const MaterialSpec& m : c.materials)
+                if (m.name == b.material) material = &m;
+            if (material == nullptr)
                 r.fail(n.as_table()->get("material"),
                        "material '" + b.material + "' is not defined");
             if (r.has("velocity")) b.velocity = r.vector("velocity");
+            b.failedBonds = r.text("failed_bonds", "keep", false);
+            if (b.failedBonds != "keep" && b.failedBonds != "either" && b.failedBonds != "both")
+                r.fail(n.as_table()->get("failed_bonds"),
+                       "'failed_bonds' must be \"keep\", \"either\" or \"both\", got \"" +
+                           b.failedBonds + "\"");
+            const auto* plastic = std::get_if<JohnsonCook>(&*material->material);
+            if (b.failedBonds != "keep" && (plastic == nullptr || !plastic->damage()))
+                r.fail(n.as_table()->get("failed_bonds"),
+                       "'failed_bonds' needs a johnson_cook material with damage; material '" +
+                           b.material + "' has none");
             c.bodies.push_back(b);
         }
     if (c.bodies.empty()) throw InputError(file + ": no [[body]] defined");

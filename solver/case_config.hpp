@@ -18,6 +18,10 @@ struct BodySpec {
     std::string group;  ///< physical-group name in the particle file, or the body id as text
     std::string material;
     Vec3 velocity = Vec3::Zero();  ///< initial velocity [m/s]
+    /// `failed_bonds`: "keep" (default), "either" or "both": a bond breaks once either or both
+    /// of its particles have failed by Johnson–Cook damage (failure/brittle_bonds.hpp); not
+    /// "keep" needs a johnson_cook material with damage.
+    std::string failedBonds = "keep";
     int line = 0;
 };
 

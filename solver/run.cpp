@@ -29,7 +29,8 @@ struct BodySetup {
     std::vector<Material> materials;
     std::vector<double> density;
     std::vector<Vec3> velocity;
-    std::vector<double> bondStretch;  ///< εmax per body (0: its bonds never break)
+    std::vector<double> bondStretch;          ///< εmax per body (0: its bonds never break)
+    std::vector<FailedBondRule> failedBonds;  ///< per body: bonds of failed particles
 };
 
 BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
@@ -60,6 +61,9 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         setup.density.push_back(m->elastic.density);
         setup.velocity.push_back(spec->velocity);
         setup.bondStretch.push_back(m->bondStretch);
+        setup.failedBonds.push_back(spec->failedBonds == "either" ? FailedBondRule::Either
+                                    : spec->failedBonds == "both" ? FailedBondRule::Both
+                                                                  : FailedBondRule::Keep);
     }
     return setup;
 }
@@ -266,6 +270,7 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
     solverOptions.bondStretch = bodies.bondStretch;
     for (const PrecrackSpec& p : c.precracks)
         solverOptions.precracks.push_back({p.corner, p.edge1, p.edge2});
+    solverOptions.failedBonds = bodies.failedBonds;
     solverOptions.contact = {c.contact.betweenBodies, c.contact.penalty, c.contact.distance};
     auto sim = std::make_unique<Simulation>(buildReference(file, bodies.density, c.kappa),
                                             std::move(bodies.materials), solverOptions);
@@ -417,20 +422,23 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         logEnd(*options.log, summary, sim.energy());
         const BrittleBonds& bonds = sim.integrator().bonds();
         if (bonds.enabled()) {
-            Index detached = 0;
-            for (Index a = 0; a < sim.reference().size(); ++a)
+            Index detached = 0, failed = 0;
+            for (Index a = 0; a < sim.reference().size(); ++a) {
                 if (bonds.detached(a)) ++detached;
+                if (sim.state().damage[static_cast<std::size_t>(a)] >= 1.0) ++failed;
+            }
             // The initial cracks' share, from the reference alone (also after a restart).
             Index initial = 0;
             if (!sim.integrator().options().precracks.empty()) {
                 std::vector<std::uint8_t> intact(static_cast<std::size_t>(ref.pairs.pairs()), 1);
                 initial = breakBondsAcross(ref, sim.integrator().options().precracks, intact);
             }
-            char line[200];
+            char line[240];
             std::snprintf(line, sizeof line,
                           "bonds: %d pairs broken (%d of them by the initial cracks), %d "
-                          "particles detached (no stress); no particle is removed",
-                          bonds.brokenPairs(), initial, detached);
+                          "particles detached (no stress), %d failed (D ≥ 1); no particle is "
+                          "removed",
+                          bonds.brokenPairs(), initial, detached, failed);
             options.log->add(line);
         }
     }

@@ -73,11 +73,20 @@ Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patc
 }
 
 BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle,
-                           bool precracked)
-    : ref_(ref), stretch_(std::move(stretchByParticle)), enabled_(precracked) {
+                           std::vector<FailedBondRule> failedRuleByParticle, bool precracked)
+    : ref_(ref),
+      stretch_(std::move(stretchByParticle)),
+      failedRule_(std::move(failedRuleByParticle)),
+      enabled_(precracked) {
     if (stretch_.size() != static_cast<std::size_t>(ref.size()))
         throw InputError("bond stretch limits: " + std::to_string(stretch_.size()) +
                          " values for " + std::to_string(ref.size()) + " particles");
+    if (failedRule_.empty()) failedRule_.assign(stretch_.size(), FailedBondRule::Keep);
+    if (failedRule_.size() != stretch_.size())
+        throw InputError("failed-bond rules: " + std::to_string(failedRule_.size()) +
+                         " values for " + std::to_string(ref.size()) + " particles");
+    for (FailedBondRule rule : failedRule_)
+        if (rule != FailedBondRule::Keep) enabled_ = true;
     for (double e : stretch_) {
         if (!(e >= 0.0) || !std::isfinite(e))
             throw InputError("bond stretch limit εmax must be finite and ≥ 0, got " +
@@ -152,22 +161,34 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
         const double initial = (ref_.X[b] - ref_.X[ia]).squaredNorm();
         return current >= factor * initial;
     };
+    // Johnson–Cook failure (D ≥ 1); the rule is the body's (pairs never join two bodies).
+    const bool damageKnown = state.damage.size() == stretch_.size();
+    const auto failed = [&](std::size_t i) { return damageKnown && state.damage[i] >= 1.0; };
     // Each particle reads and writes only its own CSR entries (its old K:∇v before writing
-    // them); (a, b) and (b, a) compare the same squared lengths, so both sides decide alike.
+    // them); (a, b) and (b, a) compare the same squared lengths and the same two damages, so
+    // both sides decide alike.
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         const double limit = stretch_[ia];
         changed_[ia] = 0;
         released_[ia] = 0.0;
-        if (limit == 0.0) return;
+        const FailedBondRule rule = failedRule_[ia];
+        if (limit == 0.0 && rule == FailedBondRule::Keep) return;
+        const bool selfFailed = failed(ia);
         const double factor = (1.0 + limit) * (1.0 + limit);
+        const auto breaks = [&](Index k) {
+            if (intact[k] == 0) return false;
+            const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+            if (rule == FailedBondRule::Either && (selfFailed || failed(b))) return true;
+            if (rule == FailedBondRule::Both && selfFailed && failed(b)) return true;
+            return limit > 0.0 && stretched(ia, k, factor);
+        };
         bool any = false;
-        for (Index k = P.begin(a); k < P.end(a) && !any; ++k)
-            any = intact[k] != 0 && stretched(ia, k, factor);
+        for (Index k = P.begin(a); k < P.end(a) && !any; ++k) any = breaks(k);
         if (!any) return;
         released_[ia] = internalPower(state, a);  // over the old bonds, with the old G
         for (Index k = P.begin(a); k < P.end(a); ++k) {
-            if (intact[k] != 0 && stretched(ia, k, factor)) {
+            if (breaks(k)) {
                 intact[k] = 0;
                 ++changed_[ia];
             }

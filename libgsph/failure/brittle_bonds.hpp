@@ -17,6 +17,17 @@
 // always agree without writing each other's entries: the check runs in parallel and gives the
 // same result for any thread count.
 //
+// Failed particles (issue #9, ductile fracture): a body may also break bonds by Johnson–Cook
+// damage (State::damage, FailedBondRule per particle): with Either, the bond of a pair (a, b)
+// breaks for good once a or b has failed (D ≥ 1); with Both, once a and b have. Both sides
+// evaluate the same rule from the same damages, so they agree as for the stretch. A failed
+// particle carries no deviatoric stress and no tension (materials/johnson_cook.hpp), but its
+// bonds still tie the two sides of a shear band together. With Either it loses every bond and
+// is detached: it keeps its mass and momentum, meets other bodies through contact, and no longer
+// ties the pieces together. With Both, a band of failed particles at least two wide cuts the
+// bonds across it, and a single failed particle inside sound material keeps its bonds. No
+// particle is removed. The damage of t_n decides at the drift of step n+1.
+//
 // Energy released (docs/theory.md "Fracture energy"): the step that breaks bonds kicks with
 // the old bonds' force f_n in its first half and the new bonds' in its second, while the
 // stress advances with the new bonds' Ḟ. Against a step whose bonds had broken at t_n, its
@@ -42,6 +53,13 @@
 #include "particles/state.hpp"
 
 namespace gsph {
+
+/// When Johnson–Cook damage breaks the bond of a pair (a, b) (see above).
+enum class FailedBondRule : std::uint8_t {
+    Keep = 0,    ///< never: failed particles keep their bonds
+    Either = 1,  ///< once a or b has failed (D ≥ 1)
+    Both = 2,    ///< once a and b have failed
+};
 
 /// What one call of breakStretchedBonds did.
 struct BondBreak {
@@ -94,25 +112,37 @@ class BrittleBonds {
     /// |det B| of a particle's surviving bonds below this fraction of its intact value: detached.
     static constexpr double kDetachedCorrection = 1e-3;
 
-    /// `stretchByParticle`: εmax of each particle's body (0 = unbreakable), from the body ranges.
+    /// `stretchByParticle`: εmax of each particle's body (0 = unbreakable), from the body ranges;
+    /// `failedRuleByParticle` (empty: Keep everywhere): the particle's body's FailedBondRule.
     /// `precracked`: the state may start with broken bonds (initial cracks), so the bonds are
-    /// tracked even when no body can break. Throws InputError on a negative or non-finite εmax.
+    /// tracked even when no body can break. Throws InputError on a negative or non-finite εmax
+    /// or a size mismatch.
     BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle,
-                 bool precracked = false);
+                 std::vector<FailedBondRule> failedRuleByParticle = {}, bool precracked = false);
 
     bool enabled() const { return enabled_; }
 
     /// Derives G, damaged and detached from state.bondIntact (at the start and after a restart).
     void attach(const State& state);
 
-    /// Breaks every bond stretched to εmax at the current positions state.x (x_{n+1}), updates
-    /// what derives from it; returns the pairs broken and the energy they release, from
-    /// state.v (v_{n+½}), state.F and state.cauchy (F_n, σ_n) and the step state.dt.
+    /// Breaks every bond stretched to εmax at the current positions state.x (x_{n+1}), and every
+    /// bond its body's FailedBondRule breaks (state.damage ≥ 1), updates what
+    /// derives from it; returns the pairs broken and the energy they release, from state.v
+    /// (v_{n+½}), state.F and state.cauchy (F_n, σ_n) and the step state.dt.
     BondBreak breakStretchedBonds(State& state);
 
     /// G per particle: the reference's until a bond of the particle breaks.
     const std::vector<Mat3>& G() const { return enabled_ ? G_ : ref_.G; }
     bool detached(Index a) const { return enabled_ && detached_[static_cast<std::size_t>(a)] != 0; }
+    /// True for a particle of a body with a FailedBondRule other than Keep that has lost a bond:
+    /// its F is advanced by F_{n+1} = F_n + Δt Ḟ instead of being taken from x_{n+1} over its
+    /// surviving bonds. Over a different set of bonds a non-affine motion gives another F, and
+    /// a pressure that is a function of J (the equations of state of Johnson–Cook bodies) would
+    /// jump with it, creating energy (docs/theory.md "Ductile fracture").
+    bool integratesF(Index a) const {
+        const auto ia = static_cast<std::size_t>(a);
+        return enabled_ && damaged_[ia] != 0 && failedRule_[ia] != FailedBondRule::Keep;
+    }
     BondView view(const State& state) const;
     /// Pairs (a < b) broken so far.
     Index brokenPairs() const { return brokenPairs_; }
@@ -123,7 +153,8 @@ class BrittleBonds {
     double internalPower(const State& state, Index a) const;
 
     const Reference& ref_;
-    std::vector<double> stretch_;  ///< εmax per particle
+    std::vector<double> stretch_;             ///< εmax per particle
+    std::vector<FailedBondRule> failedRule_;  ///< per particle
     bool enabled_ = false;
     std::vector<Mat3> G_;
     std::vector<std::uint8_t> damaged_, detached_;

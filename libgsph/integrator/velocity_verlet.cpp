@@ -82,8 +82,11 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
                      const Mat3& gradV) {
     const auto ia = static_cast<std::size_t>(a);
     const Mat3& G = s.G[ia];
-    const Mat3 F = gradX * G.transpose() + s.outOfPlane;
     const Mat3 Fdot = gradV * G.transpose();
+    // A particle that lost bonds in a body whose bonds break by damage integrates F in time
+    // (failure/brittle_bonds.hpp, integratesF): F over the surviving bonds would jump.
+    const Mat3 F = s.bonds.integratesF(a) ? Mat3(s.state.F[ia] + s.dt * Fdot)
+                                          : Mat3(gradX * G.transpose() + s.outOfPlane);
     const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
     MaterialPoint point;
     point.cauchy = s.state.cauchy[ia];
@@ -183,6 +186,17 @@ std::vector<double> stretchByParticle(const Reference& ref, const std::vector<do
     return out;
 }
 
+// Per particle: its body's rule for bonds of failed particles (Keep without an entry).
+std::vector<FailedBondRule> failedRuleByParticle(const Reference& ref,
+                                                 const std::vector<FailedBondRule>& byBody) {
+    std::vector<FailedBondRule> out(static_cast<std::size_t>(ref.size()), FailedBondRule::Keep);
+    for (std::size_t a = 0; a < out.size(); ++a) {
+        const auto body = static_cast<std::size_t>(ref.body[a]);
+        if (body < byBody.size()) out[a] = byBody[body];
+    }
+    return out;
+}
+
 }  // namespace
 
 void StepWorkspace::resize(std::size_t n) {
@@ -200,7 +214,8 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       bodies_(std::move(bodies)),
       constraints_(std::move(constraints)),
       options_(options),
-      bonds_(ref, stretchByParticle(ref, options_.bondStretch), !options_.precracks.empty()) {
+      bonds_(ref, stretchByParticle(ref, options_.bondStretch),
+             failedRuleByParticle(ref, options_.failedBonds), !options_.precracks.empty()) {
     if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
         throw InputError("CFL number must lie in (0, 1], got " + std::to_string(options_.cfl));
     if (options_.hourglass < 0.0) throw InputError("hourglass coefficient must be ≥ 0");

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Velocity-Verlet step exactly as Algorithm 1 of the paper (DESIGN §4):
 //   1. v_{n+½} = v_n + ½Δt a_n                         (then constraints at t_n + ½Δt)
-//   2. x_{n+1} = x_n + Δt v_{n+½}; bonds stretched to εmax break (failure/brittle_bonds.hpp)
+//   2. x_{n+1} = x_n + Δt v_{n+½}; bonds stretched to εmax, and bonds of failed particles
+//      (D ≥ 1) by the body's FailedBondRule, break (failure/brittle_bonds.hpp)
 //   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
 //   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
 //      (Johnson–Cook) also advance ε̄p, T, D, e and book their plastic work and the energy
@@ -24,6 +25,7 @@
 // state bit for bit.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "boundary/constraints.hpp"
@@ -49,6 +51,9 @@ struct SolverOptions {
     /// Initial cracks: the bonds crossing any of these patches start broken (at initialize(),
     /// failure/brittle_bonds.hpp), in any body, breakable or not.
     std::vector<CrackPatch> precracks;
+    /// Per body id: when Johnson–Cook damage breaks bonds (failure/brittle_bonds.hpp: Either
+    /// or Both ends failed; ductile fracture, issue #9). A body without an entry keeps them.
+    std::vector<FailedBondRule> failedBonds;
     /// > 0: a stable Δt below this fraction of the run's first Δt (State::initialDt) stops the
     /// run with NumericalError naming the particle that limits it (0 = only Δt ≤ 0 or NaN).
     double minTimeStepRatio = 0.0;

@@ -27,6 +27,7 @@
 #include "io/snapshot.hpp"
 #include "kinematics/deformation_gradient.hpp"
 #include "simulation.hpp"
+#include "support/johnson_cook_materials.hpp"
 #include "support/lattice_fixtures.hpp"
 
 namespace gsph {
@@ -357,6 +358,119 @@ TEST(BrittleBonds, PrecrackedBlockPulledApartCarriesNoForceAcrossThePatch) {
     EXPECT_LT(worstV, 1e-9 * v0);
     EXPECT_LT(worstStress, 1e-12 * steel.youngsModulus);  // round-off of F = I, times E
     EXPECT_EQ(bonds.brokenPairs(), across);               // εmax = 0: nothing else breaks
+}
+
+// Ductile fracture (issue #9): with FailedBondRule::Either, every bond of a Johnson–Cook particle
+// breaks once its damage reaches 1. A steel bar (Weldox 460E strength, damage constants scaled
+// down so that it fails within a short pull: εf ≈ 0.15 at σ* = 1/3; 10 × 2 × 2 mm, 25 × 5 × 5
+// particles) is pulled apart at ±20 m/s from its end layers. Claims: the bar comes apart (no
+// path of intact bonds joins its ends) where particles failed; every broken bond has a failed
+// end, every failed particle is detached (no bond left, no stress); no particle is removed and
+// none inverts; the ledger's total (kinetic + elastic + plastic + damage + fracture + viscous +
+// hourglass − boundary work) stays within 1 % of the energy moved. Without the option the same
+// pull breaks no bond.
+struct DuctileBar {
+    bool apart = false;
+    Index broken = 0, detached = 0, failed = 0;
+    Index brokenWithoutFailedEnd = 0, failedWithBonds = 0;
+    double worstImbalance = 0.0, scale = 0.0;
+    EnergyReport energy;
+};
+
+DuctileBar pullDuctileBar(bool failedParticlesLoseBonds) {
+    const JohnsonCook steel =
+        testing::withLinearEos(testing::kWeldoxElastic, testing::weldoxParams(),
+                               JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}});
+    const double length = 0.01, width = 0.002, spacing = length / 25, v = 20.0;
+    SolverOptions options;
+    options.viscosity = {1.0, 1.0};
+    options.hourglass = 0.1;
+    options.failedBonds = {failedParticlesLoseBonds ? FailedBondRule::Either
+                                                    : FailedBondRule::Keep};
+    Simulation sim(
+        latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 7850.0, 1.2),
+        {steel}, options);
+    const Reference& ref = sim.reference();
+    std::vector<Index> left, right;
+    for (Index a = 0; a < ref.size(); ++a) {
+        const double X = ref.X[static_cast<std::size_t>(a)][0];
+        if (X < spacing) left.push_back(a);
+        if (X > length - spacing) right.push_back(a);
+    }
+    sim.constrain({"left", left, [&](double, const Vec3&) { return Vec3(-v, 0, 0); }});
+    sim.constrain({"right", right, [&](double, const Vec3&) { return Vec3(v, 0, 0); }});
+    sim.setVelocity([&](const Vec3& X) { return Vec3(v * (2 * X[0] / length - 1), 0, 0); });
+    const auto endsApart = [&](const State& s) {
+        std::vector<Index> root(static_cast<std::size_t>(ref.size()));
+        for (Index a = 0; a < ref.size(); ++a) root[static_cast<std::size_t>(a)] = a;
+        const auto find = [&](Index a) {
+            while (root[static_cast<std::size_t>(a)] != a)
+                a = root[static_cast<std::size_t>(a)] =
+                    root[static_cast<std::size_t>(root[static_cast<std::size_t>(a)])];
+            return a;
+        };
+        for (Index a = 0; a < ref.size(); ++a)
+            for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k)
+                if (s.bondIntact[static_cast<std::size_t>(k)] != 0)
+                    root[static_cast<std::size_t>(find(a))] =
+                        find(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
+        return find(left.front()) != find(right.front());
+    };
+    sim.start();
+    const EnergyReport e0 = sim.energy();
+    DuctileBar out;
+    out.scale = e0.kinetic;
+    double apartAt = -1.0;
+    // 1 µs at a time until the ends are apart (or 60 µs), then 5 µs more.
+    for (int k = 1; k <= 60 && (apartAt < 0.0 || sim.state().time < apartAt + 5e-6); ++k) {
+        sim.advanceTo(k * 1e-6);
+        const EnergyReport e = sim.energy();
+        out.scale = std::max(out.scale, e.boundaryWork);
+        out.worstImbalance = std::max(out.worstImbalance, std::abs(e.total() - e0.total()));
+        if (apartAt < 0.0 && endsApart(sim.state())) apartAt = sim.state().time;
+    }
+    const State& s = sim.state();
+    out.apart = endsApart(s);
+    out.energy = sim.energy();
+    out.broken = sim.integrator().bonds().brokenPairs();
+    for (Index a = 0; a < ref.size(); ++a) {
+        const auto ia = static_cast<std::size_t>(a);
+        const bool failed = s.damage[ia] >= 1.0;
+        if (failed) ++out.failed;
+        if (sim.integrator().bonds().detached(a)) ++out.detached;
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
+            const auto b =
+                static_cast<std::size_t>(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
+            const bool intact = s.bondIntact[static_cast<std::size_t>(k)] != 0;
+            if (!intact && !failed && s.damage[b] < 1.0) ++out.brokenWithoutFailedEnd;
+            if (intact && failed) ++out.failedWithBonds;
+        }
+    }
+    std::printf(
+        "[bonds] ductile bar (failed particles lose bonds: %s): t = %.1f µs, %d failed, %d "
+        "detached, %d pairs broken, ends %s; boundary work %.4f J, plastic %.4f, damage %.5f, "
+        "fracture %.5f, viscous %.4f J; worst imbalance %.2e of the energy moved\n",
+        failedParticlesLoseBonds ? "yes" : "no", 1e6 * s.time, out.failed, out.detached, out.broken,
+        out.apart ? "apart" : "joined", out.energy.boundaryWork, out.energy.plasticWork,
+        out.energy.damageDissipation, out.energy.fractureEnergy, out.energy.viscousWork,
+        out.worstImbalance / out.scale);
+    return out;
+}
+
+TEST(BrittleBonds, FailedParticlesLoseTheirBondsAndTheDuctileBarComesApart) {
+    const DuctileBar bar = pullDuctileBar(true);
+    EXPECT_GT(bar.failed, 0);
+    EXPECT_TRUE(bar.apart) << "the two ends are still joined";
+    EXPECT_GT(bar.broken, 0);
+    EXPECT_EQ(bar.brokenWithoutFailedEnd, 0) << "a bond broke between two sound particles";
+    EXPECT_EQ(bar.failedWithBonds, 0) << "a failed particle kept a bond";
+    EXPECT_GE(bar.detached, bar.failed);
+    EXPECT_LT(bar.worstImbalance, 1e-2 * bar.scale);
+    const DuctileBar kept = pullDuctileBar(false);
+    EXPECT_GT(kept.failed, 0);
+    EXPECT_EQ(kept.broken, 0);
+    EXPECT_FALSE(kept.apart);
+    EXPECT_EQ(kept.energy.fractureEnergy, 0.0);
 }
 
 }  // namespace

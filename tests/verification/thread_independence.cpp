@@ -20,11 +20,13 @@ namespace gsph {
 namespace {
 
 State runWithThreads(int threads, EnergyReport* energy, const Material& material, int steps = 150,
-                     double bondStretch = 0.0) {
+                     double bondStretch = 0.0, bool failedParticlesLoseBonds = false) {
     const int saved = omp_get_max_threads();
     omp_set_num_threads(threads);
     SolverOptions options;
     options.bondStretch = {bondStretch};
+    options.failedBonds = {failedParticlesLoseBonds ? FailedBondRule::Either
+                                                    : FailedBondRule::Keep};
     options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;
     using Kind = AxisGrading::Kind;
@@ -96,6 +98,23 @@ TEST(ThreadIndependence, BrokenBondsAndTheirEnergyToo) {
     EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
     EXPECT_GT(std::count(s1.bondIntact.begin(), s1.bondIntact.end(), std::uint8_t{0}), 0);
     EXPECT_NE(e1.fractureEnergy, 0.0);  // signed: bonds break here under axial compression
+}
+
+// Johnson–Cook particles that fail lose their bonds (SolverOptions::failedBonds,
+// FailedBondRule::Either): the damage-driven breaks, the detached particles and the ledger do not
+// depend on the thread count either.
+TEST(ThreadIndependence, FailedParticlesLosingTheirBondsToo) {
+    const Material plastic = testing::softFailingSteel();
+    EnergyReport e1, e2;
+    const State s1 = runWithThreads(1, &e1, plastic, 60, 0.0, true);
+    const State s2 = runWithThreads(2, &e2, plastic, 60, 0.0, true);
+    EXPECT_TRUE(bitIdentical(s1.x, s2.x));
+    EXPECT_TRUE(bitIdentical(s1.v, s2.v));
+    EXPECT_TRUE(bitIdentical(s1.cauchy, s2.cauchy));
+    EXPECT_TRUE(bitIdentical(s1.damage, s2.damage));
+    EXPECT_TRUE(bitIdentical(s1.bondIntact, s2.bondIntact));
+    EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
+    EXPECT_GT(std::count(s1.bondIntact.begin(), s1.bondIntact.end(), std::uint8_t{0}), 0);
 }
 
 // Contact between two bodies (the current-configuration search, the pair forces and energy),
