@@ -97,20 +97,18 @@ class BandConstraints {
 
 }  // namespace
 
-InterfaceWeightStats correctInterfaceWeights(Reference& ref) {
+void correctInterfaceWeights(Reference& ref) {
     ref.correctionBegin.clear();
     ref.pairCorrection.clear();
     ref.mirrorCorrection.clear();
-    InterfaceWeightStats stats;
-    if (ref.oversetBand.empty()) return stats;
+    if (ref.oversetBand.empty()) return;
     const PairList& P = ref.pairs;
     const auto n = static_cast<std::size_t>(ref.size());
     std::vector<Index> rowOf(n, -1);
     Index constrained = 0;
     for (std::size_t a = 0; a < n; ++a)
         if (ref.oversetBand[a] != 0) rowOf[a] = constrained++;
-    stats.constrainedParticles = constrained;
-    if (constrained == 0) return stats;
+    if (constrained == 0) return;
     std::vector<CorrectedPair> pairs;
     for (Index a = 0; a < ref.size(); ++a) {
         if (rowOf[static_cast<std::size_t>(a)] < 0) continue;
@@ -191,17 +189,16 @@ InterfaceWeightStats correctInterfaceWeights(Reference& ref) {
         rz = rzNext;
         ++it;
     }
-    stats.iterations = it;
     // The achieved residual, recomputed from the corrections themselves.
     Eigen::VectorXd correction(A.unknowns()), achieved(rows);
     A.applyAt(lambda, correction);
     A.applyA(correction, achieved);
-    stats.residual = rhsNorm > 0.0 ? (achieved - rhs).norm() / rhsNorm : 0.0;
-    if (!(stats.residual < 1e-9))
+    const double achievedResidual = rhsNorm > 0.0 ? (achieved - rhs).norm() / rhsNorm : 0.0;
+    if (!(achievedResidual < 1e-9))
         throw NumericalError(
             "overset interface weights: the band's consistency constraints "
             "cannot be met (relative residual " +
-            std::to_string(stats.residual) + " after " + std::to_string(it) + " iterations)");
+            std::to_string(achievedResidual) + " after " + std::to_string(it) + " iterations)");
     // Store in θ units along each list: δw_ab = G(a)^{-1} δγ_ab, and the mirrors.
     ref.correctionBegin.assign(n, -1);
     std::vector<std::uint8_t> touched(n, 0);
@@ -234,10 +231,8 @@ InterfaceWeightStats correctInterfaceWeights(Reference& ref) {
             throw Error("correctInterfaceWeights: a same-space pair without its mirror");
         ref.mirrorCorrection[slot(p.b, P.begin(p.b) + (it2 - first))] = dw;
     }
-    stats.correctedPairs = static_cast<Index>(A.pairs().size());
     for (std::size_t a = 0; a < n; ++a)
         if (touched[a] != 0) ref.oversetCoupled[a] = 1;
-    return stats;
 }
 
 }  // namespace gsph

@@ -36,18 +36,10 @@
 
 namespace gsph {
 
-/// Statistics of the solve, for reports and tests.
-struct InterfaceWeightStats {
-    Index constrainedParticles = 0;  ///< band particles (constraint (1); (2)–(3) off free faces)
-    Index correctedPairs = 0;        ///< pairs whose weight changed
-    int iterations = 0;              ///< conjugate-gradient iterations
-    double residual = 0.0;           ///< final constraint residual, relative to the initial one
-};
-
 /// Fills ref.correctionBegin, ref.pairCorrection and ref.mirrorCorrection (empty when there is
 /// no band) and adds every particle with a corrected pair to ref.oversetCoupled (CSR path).
 /// Needs ref.G, ref.quadVolume, ref.smoothingLength, ref.oversetBand (markOversetBand).
 /// Throws NumericalError when the constraints cannot be met (a band without enough pairs).
-InterfaceWeightStats correctInterfaceWeights(Reference& ref);
+void correctInterfaceWeights(Reference& ref);
 
 }  // namespace gsph

@@ -33,6 +33,25 @@
 namespace gsph {
 namespace {
 
+// The pieces a body is in: union–find over its intact bonds, the root of each particle's piece.
+std::vector<Index> bondPieces(const Reference& ref, const std::vector<std::uint8_t>& intact) {
+    std::vector<Index> root(static_cast<std::size_t>(ref.size()));
+    for (Index a = 0; a < ref.size(); ++a) root[static_cast<std::size_t>(a)] = a;
+    const auto find = [&](Index a) {
+        while (root[static_cast<std::size_t>(a)] != a)
+            a = root[static_cast<std::size_t>(a)] =
+                root[static_cast<std::size_t>(root[static_cast<std::size_t>(a)])];
+        return a;
+    };
+    for (Index a = 0; a < ref.size(); ++a)
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k)
+            if (intact[static_cast<std::size_t>(k)] != 0)
+                root[static_cast<std::size_t>(find(a))] =
+                    find(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
+    for (Index a = 0; a < ref.size(); ++a) root[static_cast<std::size_t>(a)] = find(a);
+    return root;
+}
+
 TEST(BrittleBonds, AffineMotionGivesExactFAfterBondsBreak) {
     // A block cut by a plane: every bond across x = 0.5 broken. Over the surviving bonds the
     // metric is recomputed, so F = I at rest and F = A under x = A X, on both faces of the cut.
@@ -124,24 +143,15 @@ TEST(BrittleBonds, BarBreaksWhereAndWhenTheStretchCriterionSays) {
     for (const auto& [a, b] : firstBroken)
         EXPECT_LT(std::abs(centre(a, b) - middle), 1.5 * spacing) << "bond " << a << "–" << b;
     const State& s = sim.state();
-    std::vector<Index> root(static_cast<std::size_t>(ref.size()));
-    for (Index a = 0; a < ref.size(); ++a) root[static_cast<std::size_t>(a)] = a;
-    const auto find = [&](Index a) {
-        while (root[static_cast<std::size_t>(a)] != a)
-            a = root[static_cast<std::size_t>(a)] =
-                root[static_cast<std::size_t>(root[static_cast<std::size_t>(a)])];
-        return a;
-    };
     double farthest = 0.0;
     for (Index a = 0; a < ref.size(); ++a)
-        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
-            const Index b = ref.pairs.neighbor[static_cast<std::size_t>(k)];
-            if (s.bondIntact[static_cast<std::size_t>(k)] != 0)
-                root[static_cast<std::size_t>(find(a))] = find(b);
-            else
-                farthest = std::max(farthest, std::abs(centre(a, b) - middle));
-        }
-    EXPECT_NE(find(0), find(ref.size() - 1)) << "the two ends are still joined";
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k)
+            if (s.bondIntact[static_cast<std::size_t>(k)] == 0)
+                farthest = std::max(
+                    farthest,
+                    std::abs(centre(a, ref.pairs.neighbor[static_cast<std::size_t>(k)]) - middle));
+    const std::vector<Index> piece = bondPieces(ref, s.bondIntact);
+    EXPECT_NE(piece.front(), piece.back()) << "the two ends are still joined";
     std::printf(
         "[bonds] bar: %zu bonds broke first, at the middle; the ends came apart; broken "
         "bonds reach %.1f spacings from the middle (bound %.1f)\n",
@@ -401,20 +411,9 @@ DuctileBar pullDuctileBar(bool failedParticlesLoseBonds) {
     sim.constrain({"right", right, [&](double, const Vec3&) { return Vec3(v, 0, 0); }});
     sim.setVelocity([&](const Vec3& X) { return Vec3(v * (2 * X[0] / length - 1), 0, 0); });
     const auto endsApart = [&](const State& s) {
-        std::vector<Index> root(static_cast<std::size_t>(ref.size()));
-        for (Index a = 0; a < ref.size(); ++a) root[static_cast<std::size_t>(a)] = a;
-        const auto find = [&](Index a) {
-            while (root[static_cast<std::size_t>(a)] != a)
-                a = root[static_cast<std::size_t>(a)] =
-                    root[static_cast<std::size_t>(root[static_cast<std::size_t>(a)])];
-            return a;
-        };
-        for (Index a = 0; a < ref.size(); ++a)
-            for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k)
-                if (s.bondIntact[static_cast<std::size_t>(k)] != 0)
-                    root[static_cast<std::size_t>(find(a))] =
-                        find(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
-        return find(left.front()) != find(right.front());
+        const std::vector<Index> piece = bondPieces(ref, s.bondIntact);
+        return piece[static_cast<std::size_t>(left.front())] !=
+               piece[static_cast<std::size_t>(right.front())];
     };
     sim.start();
     const EnergyReport e0 = sim.energy();
