@@ -59,9 +59,10 @@ double vonMises(const Mat3& sigma) {
 }
 
 const std::vector<std::string>& scalarFieldNames() {
-    static const std::vector<std::string> names = {
-        "von_mises", "pressure", "displacement", "velocity", "plastic_strain", "temperature",
-        "damage",    "J",        "body",         "space",    "transient"};
+    static const std::vector<std::string> names = {"von_mises", "pressure",       "displacement",
+                                                   "velocity",  "plastic_strain", "temperature",
+                                                   "damage",    "bond_damage",    "J",
+                                                   "body",      "space",          "transient"};
     return names;
 }
 
@@ -79,6 +80,7 @@ double scalarField(const Snapshot& s, std::size_t a, const std::string& name) {
     if (name == "plastic_strain") return s.plasticStrain[a];
     if (name == "temperature") return s.temperature[a];
     if (name == "damage") return s.damage[a];
+    if (name == "bond_damage") return s.bondDamage.empty() ? 0.0 : s.bondDamage[a];
     if (name == "J") return s.F[a].determinant();
     if (name == "body") return s.body[a];
     if (name == "space") return s.space[a];
@@ -103,6 +105,7 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     auto plastic = namedArray<vtkDoubleArray>("plastic_strain", 1, n);
     auto temperature = namedArray<vtkDoubleArray>("temperature", 1, n);
     auto damage = namedArray<vtkDoubleArray>("damage", 1, n);
+    auto bondDamage = namedArray<vtkDoubleArray>("bond_damage", 1, n);
     auto J = namedArray<vtkDoubleArray>("J", 1, n);
     auto volume = namedArray<vtkDoubleArray>("reference_volume", 1, n);
     auto body = namedArray<vtkIntArray>("body", 1, n);
@@ -115,7 +118,8 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     double *u = displacement->GetPointer(0), *v = velocity->GetPointer(0),
            *sig = stress->GetPointer(0), *vm = mises->GetPointer(0), *p = pressure->GetPointer(0),
            *ep = plastic->GetPointer(0), *T = temperature->GetPointer(0),
-           *D = damage->GetPointer(0), *detF = J->GetPointer(0), *V = volume->GetPointer(0);
+           *D = damage->GetPointer(0), *Db = bondDamage->GetPointer(0), *detF = J->GetPointer(0),
+           *V = volume->GetPointer(0);
     int *bd = body->GetPointer(0), *sp = space->GetPointer(0);
     unsigned char* tr = transient->GetPointer(0);
     off[n] = n;
@@ -135,6 +139,7 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
         ep[a] = snap.plasticStrain[i];
         T[a] = snap.temperature[i];
         D[a] = snap.damage[i];
+        Db[a] = snap.bondDamage.empty() ? 0.0 : snap.bondDamage[i];
         detF[a] = snap.F[i].determinant();
         V[a] = snap.volume[i];
         bd[a] = snap.body[i];
@@ -148,8 +153,8 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     grid->SetCells(VTK_VERTEX, cells);
     vtkPointData* pd = grid->GetPointData();
     for (vtkDataArray* arr : std::initializer_list<vtkDataArray*>{
-             displacement, velocity, stress, mises, pressure, plastic, temperature, damage, J,
-             volume, body, space, transient})
+             displacement, velocity, stress, mises, pressure, plastic, temperature, damage,
+             bondDamage, J, volume, body, space, transient})
         pd->AddArray(arr);
     writeXml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
 }

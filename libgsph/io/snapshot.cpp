@@ -74,6 +74,22 @@ std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
     return out;
 }
 
+std::vector<double> brokenBondFraction(const PairList& pairs,
+                                       const std::vector<std::uint8_t>& bondIntact) {
+    std::vector<double> out(static_cast<std::size_t>(pairs.particles()), 0.0);
+    if (bondIntact.empty()) return out;
+    for (Index a = 0; a < pairs.particles(); ++a) {
+        Index broken = 0;
+        for (Index k = pairs.begin(a); k < pairs.end(a); ++k)
+            if (bondIntact[static_cast<std::size_t>(k)] == 0) ++broken;
+        const Index bonds = pairs.end(a) - pairs.begin(a);
+        if (bonds > 0)
+            out[static_cast<std::size_t>(a)] =
+                static_cast<double>(broken) / static_cast<double>(bonds);
+    }
+    return out;
+}
+
 void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,
                    const Provenance& provenance) {
     writeAtomically(path, [&](const std::filesystem::path& temp) {
@@ -102,6 +118,8 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         for (const OversetEntry& e : ref.overset)
             transient[static_cast<std::size_t>(e.particle)] = 1;
         f.write("/particles/transient", transient.data(), {n});
+        const std::vector<double> bondDamage = brokenBondFraction(ref.pairs, state.bondIntact);
+        f.write("/particles/bond_damage", bondDamage.data(), {n});
         const std::vector<std::array<Index, 2>> broken = brokenBonds(ref.pairs, state.bondIntact);
         f.write("/bonds/broken", broken.empty() ? nullptr : broken.data()->data(),
                 {broken.size(), 2});
@@ -140,6 +158,9 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
             throw IoError(path.string() + ": /particles/transient has the wrong length");
         for (std::size_t a = 0; a < n; ++a) s.transient[a] = t[a] != 0 ? 1 : 0;
     }
+    s.bondDamage.assign(n, 0.0);
+    if (f.exists("/particles/bond_damage"))  // since 0.4
+        s.bondDamage = readScalars(f, "/particles/bond_damage", n);
     const std::vector<Index> broken = f.read<std::int32_t>("/bonds/broken", dims);
     if (dims.size() != 2 || dims[1] != 2)
         throw IoError(path.string() + ": /bonds/broken is not an M×2 array");

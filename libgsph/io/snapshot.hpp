@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
-// HDF5, format "gsph-snapshot" 0.3 (provisional until the solver issue #6 settles it; layout in
+// HDF5, format "gsph-snapshot" 0.4 (provisional until the solver issue #6 settles it; layout in
 // docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)
@@ -12,6 +12,8 @@
 //   /particles/plastic_strain, temperature, damage   N float64
 //   /particles/transient         N int8: 1 if the particle has an overset entry (since 0.3;
 //                                absent in older files, read as 0)
+//   /particles/bond_damage       N float64: the share of the particle's bonds that broke (since
+//                                0.4; absent in older files, read as 0)
 //   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
 #pragma once
 
@@ -28,7 +30,7 @@ namespace gsph {
 
 inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
-inline constexpr int kSnapshotFormatMinor = 3;
+inline constexpr int kSnapshotFormatMinor = 4;
 
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
@@ -41,6 +43,8 @@ struct Snapshot {
     std::vector<double> plasticStrain, temperature, damage;
     /// 1 if the particle is transient in another space (Reference::overset), else 0.
     std::vector<std::uint8_t> transient;
+    /// Broken bonds / bonds of each particle (the peridynamic damage index; 0 without bonds).
+    std::vector<double> bondDamage;
     std::vector<std::array<Index, 2>> brokenBonds;  ///< (a, b), a < b
     Provenance provenance;
     Index size() const { return static_cast<Index>(x.size()); }
@@ -54,6 +58,12 @@ std::vector<Mat3> fromRowMajor(const std::vector<double>& rows);
 /// The broken bonds of a state as particle pairs (a, b) with a < b, in CSR order.
 std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
                                               const std::vector<std::uint8_t>& bondIntact);
+
+/// Per particle, the share of its bonds (its entries in `pairs`) that broke: the damage index of
+/// peridynamics, in which a crack shows as a line of particles near ½ (one face's bonds gone).
+/// All zero when no bond is tracked (bondIntact empty) and for a particle without neighbours.
+std::vector<double> brokenBondFraction(const PairList& pairs,
+                                       const std::vector<std::uint8_t>& bondIntact);
 
 /// Writes the state of a run. Throws IoError naming the file on failure (nothing left behind).
 void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,

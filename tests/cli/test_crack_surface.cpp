@@ -102,6 +102,46 @@ TEST_F(CrackSurfaceTest, FlatCutGivesTheCutsArea) {
     for (const Vec3& x : c.points) EXPECT_NEAR(x[2], 0.5, 1e-12);   // on the plane itself
 }
 
+// The snapshot's bond damage (the peridynamic damage index) of the flat cut: per particle, the
+// broken bonds it appears in over its bonds; zero beyond one support of the cut; the same for
+// mirror images across the cut plane (z → 1 − z), and the layers next to the cut lose most.
+TEST_F(CrackSurfaceTest, FlatCutBondDamageIsTheShareOfBrokenBonds) {
+    TempDir dir;
+    const Snapshot s = throughFile(*ref_, cutAlong(*ref_, Vec3::UnitZ(), Vec3::Constant(0.5)),
+                                   dir / "snapshot_000000.h5");
+    ASSERT_EQ(s.bondDamage.size(), static_cast<std::size_t>(ref_->size()));
+    std::vector<int> broken(s.bondDamage.size(), 0);
+    for (const auto& [a, b] : s.brokenBonds) {
+        ++broken[static_cast<std::size_t>(a)];
+        ++broken[static_cast<std::size_t>(b)];
+    }
+    const double h = 1.0 / kCells;
+    const double support = 2.0 * 1.2 * h;  // the fixture's κ = 1.2
+    double largest = 0.0;
+    for (Index a = 0; a < ref_->size(); ++a) {
+        const auto ia = static_cast<std::size_t>(a);
+        const double bonds = static_cast<double>(ref_->pairs.end(a) - ref_->pairs.begin(a));
+        EXPECT_DOUBLE_EQ(s.bondDamage[ia], broken[ia] / bonds);
+        const double z = s.X[ia][2];
+        if (std::abs(z - 0.5) > support) {
+            EXPECT_EQ(s.bondDamage[ia], 0.0);
+        }
+        const Index mirror = a + static_cast<Index>(kCells * kCells) *
+                                     (kCells - 1 - 2 * static_cast<Index>(z * kCells));
+        ASSERT_NEAR(s.X[static_cast<std::size_t>(mirror)][2], 1.0 - z, 1e-12);
+        EXPECT_DOUBLE_EQ(s.bondDamage[ia], s.bondDamage[static_cast<std::size_t>(mirror)]);
+        largest = std::max(largest, s.bondDamage[ia]);
+    }
+    // The layers next to the cut (z = 0.5 ± h/2) hold the largest share.
+    for (Index a = 0; a < ref_->size(); ++a) {
+        if (s.bondDamage[static_cast<std::size_t>(a)] == largest) {
+            EXPECT_NEAR(std::abs(s.X[static_cast<std::size_t>(a)][2] - 0.5), 0.5 * h, 1e-12);
+        }
+    }
+    EXPECT_GT(largest, 0.25);
+    EXPECT_LT(largest, 0.5);
+}
+
 TEST_F(CrackSurfaceTest, NoBrokenBondGivesNoSurface) {
     TempDir dir;
     const Snapshot s = throughFile(*ref_, State::atRest(ref_->X, ref_->pairs.neighbor.size()),
