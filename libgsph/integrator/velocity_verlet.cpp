@@ -70,7 +70,10 @@ void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const M
     w.factors.density[ia] = point.density;
     w.factors.soundSpeed[ia] = model.waveSpeed(point);
     w.fields.F.set(ia, F);
-    w.lengthScale[ia] = s.ref.spacing[ia] * smallestStretchBound(C, J);
+    // A particle whose surviving bonds raise its G stiffens its pair forces as ‖G‖²
+    // (failure/brittle_bonds.hpp, stepFactor).
+    w.lengthScale[ia] =
+        s.ref.spacing[ia] * smallestStretchBound(C, J) * s.bonds.stepFactor(static_cast<Index>(ia));
     w.failure[ia] =
         static_cast<std::uint8_t>(point.cauchy.allFinite() ? Failure::None : Failure::NotFinite);
 }
