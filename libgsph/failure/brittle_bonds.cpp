@@ -137,14 +137,16 @@ void BrittleBonds::refreshParticle(const State& state, Index a) {
         return;
     }
     const ParticleMetric pm = particleMetric(ref_, a, intact);
-    const bool spans = pm.status == ParticleMetric::Status::Ok &&
-                       std::abs(pm.B.determinant()) >= kDetachedCorrection * intactDetB_[ia];
+    bool spans = pm.status == ParticleMetric::Status::Ok &&
+                 std::abs(pm.B.determinant()) >= kDetachedCorrection * intactDetB_[ia];
+    // With Cut, also detached when G has grown beyond 1/kDetachedStepFactor of its intact size
+    // (the other rules keep the |det B| criterion alone).
+    const double factor = spans ? std::min(1.0, ref_.G[ia].norm() / pm.G.norm()) : 1.0;
+    const bool byDamage = failedRule_[ia] != FailedBondRule::Keep;
+    if (failedRule_[ia] == FailedBondRule::Cut && factor < kDetachedStepFactor) spans = false;
     detached_[ia] = spans ? 0 : 1;
     G_[ia] = spans ? pm.G : Mat3::Zero();
-    // Only in bodies whose bonds break by damage (the stretch criterion's runs keep their step).
-    stepFactor_[ia] = spans && failedRule_[ia] != FailedBondRule::Keep
-                          ? std::min(1.0, ref_.G[ia].norm() / pm.G.norm())
-                          : 1.0;
+    stepFactor_[ia] = spans && byDamage ? factor : 1.0;
 }
 
 void BrittleBonds::attach(const State& state) {

@@ -10,8 +10,9 @@
 // what derives from it: G per particle, which particles lost a bond (they leave the stencil
 // fast path for the masked CSR path), and which are detached (their surviving bonds no
 // longer span the space: |det B| fell below kDetachedCorrection of its intact value, or M
-// inverts). A detached particle carries no stress and keeps its last F; its surviving bonds
-// still move it with its neighbours.
+// inverts; with FailedBondRule::Cut, also once G has grown fourfold, kDetachedStepFactor). A
+// detached particle carries no stress and keeps its last F; its surviving bonds still move it with
+// its neighbours.
 //
 // Both directions of a pair evaluate the same stretch from the same positions, so a and b
 // always agree without writing each other's entries: the check runs in parallel and gives the
@@ -133,6 +134,11 @@ class BrittleBonds {
   public:
     /// |det B| of a particle's surviving bonds below this fraction of its intact value: detached.
     static constexpr double kDetachedCorrection = 1e-3;
+    /// In a body with FailedBondRule::Cut, a particle is also detached once ‖G_ref‖_F / ‖G‖_F
+    /// falls below this: its surviving bonds leave F ill-conditioned (a particle next to a plane
+    /// cut keeps 0.63–0.66, measured), and its stiffness, growing as ‖G‖², sets the time step of
+    /// the whole run (plate perforation without it: G 5–12× its intact size, Δt 40× below Δt0).
+    static constexpr double kDetachedStepFactor = 0.25;
 
     /// `stretchByParticle`: εmax of each particle's body (0 = unbreakable), from the body ranges;
     /// `failedRuleByParticle` (empty: Keep everywhere): the particle's body's FailedBondRule.
