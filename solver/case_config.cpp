@@ -301,9 +301,10 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
                        "material '" + b.material + "' is not defined");
             if (r.has("velocity")) b.velocity = r.vector("velocity");
             b.failedBonds = r.text("failed_bonds", "keep", false);
-            if (b.failedBonds != "keep" && b.failedBonds != "either" && b.failedBonds != "both")
+            if (b.failedBonds != "keep" && b.failedBonds != "either" && b.failedBonds != "both" &&
+                b.failedBonds != "cut")
                 r.fail(n.as_table()->get("failed_bonds"),
-                       "'failed_bonds' must be \"keep\", \"either\" or \"both\", got \"" +
+                       "'failed_bonds' must be \"keep\", \"either\", \"both\" or \"cut\", got \"" +
                            b.failedBonds + "\"");
             const auto* plastic = std::get_if<JohnsonCook>(&*material->material);
             if (b.failedBonds != "keep" && (plastic == nullptr || !plastic->damage()))

@@ -19,8 +19,9 @@ struct BodySpec {
     std::string material;
     Vec3 velocity = Vec3::Zero();  ///< initial velocity [m/s]
     /// `failed_bonds`: "keep" (default), "either" or "both": a bond breaks once either or both
-    /// of its particles have failed by Johnson–Cook damage (failure/brittle_bonds.hpp); not
-    /// "keep" needs a johnson_cook material with damage.
+    /// of its particles have failed by Johnson–Cook damage; "cut": as "either", and also once
+    /// its reference segment passes through a failed particle's cell (failure/brittle_bonds.hpp);
+    /// not "keep" needs a johnson_cook material with damage.
     std::string failedBonds = "keep";
     int line = 0;
 };

@@ -63,6 +63,7 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         setup.bondStretch.push_back(m->bondStretch);
         setup.failedBonds.push_back(spec->failedBonds == "either" ? FailedBondRule::Either
                                     : spec->failedBonds == "both" ? FailedBondRule::Both
+                                    : spec->failedBonds == "cut"  ? FailedBondRule::Cut
                                                                   : FailedBondRule::Keep);
     }
     return setup;

@@ -3,6 +3,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -35,6 +36,13 @@ bool segmentCrossesPatch(const CrackPatch& patch, const Vec3& from, const Vec3& 
     // of the positions, so that layouts with the same positions cut the same bonds.
     const double tol = kPatchEdgeTolerance;
     return s >= -tol && s <= 1.0 + tol && u >= -tol && u <= 1.0 + tol;
+}
+
+bool segmentPassesNear(const Vec3& p, const Vec3& q, const Vec3& f, double radius) {
+    const Vec3 d = q - p;
+    const double dd = d.squaredNorm();
+    const double t = dd > 0.0 ? std::clamp((f - p).dot(d) / dd, 0.0, 1.0) : 0.0;
+    return (p + t * d - f).squaredNorm() < radius * radius;
 }
 
 Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patches,
@@ -85,8 +93,10 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
     if (failedRule_.size() != stretch_.size())
         throw InputError("failed-bond rules: " + std::to_string(failedRule_.size()) +
                          " values for " + std::to_string(ref.size()) + " particles");
-    for (FailedBondRule rule : failedRule_)
+    for (FailedBondRule rule : failedRule_) {
         if (rule != FailedBondRule::Keep) enabled_ = true;
+        if (rule == FailedBondRule::Cut) anyCut_ = true;
+    }
     for (double e : stretch_) {
         if (!(e >= 0.0) || !std::isfinite(e))
             throw InputError("bond stretch limit εmax must be finite and ≥ 0, got " +
@@ -101,6 +111,12 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
     changed_.assign(n, 0);
     released_.assign(n, 0.0);
     intactDetB_.resize(n);
+    stepFactor_.assign(n, 1.0);
+    if (anyCut_) {
+        failedSeen_.assign(n, 0);
+        newlyFailed_.assign(n, 0);
+        nearNewlyFailed_.assign(n, 0);
+    }
     parallelFor(ref.size(), [&](Index a) {
         intactDetB_[static_cast<std::size_t>(a)] =
             std::abs(particleMetric(ref_, a).B.determinant());
@@ -117,13 +133,20 @@ void BrittleBonds::refreshParticle(const State& state, Index a) {
     if (damaged == 0) {
         G_[ia] = ref_.G[ia];
         detached_[ia] = 0;
+        stepFactor_[ia] = 1.0;
         return;
     }
     const ParticleMetric pm = particleMetric(ref_, a, intact);
-    const bool spans = pm.status == ParticleMetric::Status::Ok &&
-                       std::abs(pm.B.determinant()) >= kDetachedCorrection * intactDetB_[ia];
+    bool spans = pm.status == ParticleMetric::Status::Ok &&
+                 std::abs(pm.B.determinant()) >= kDetachedCorrection * intactDetB_[ia];
+    // With Cut, also detached when G has grown beyond 1/kDetachedStepFactor of its intact size
+    // (the other rules keep the |det B| criterion alone).
+    const double factor = spans ? std::min(1.0, ref_.G[ia].norm() / pm.G.norm()) : 1.0;
+    const bool byDamage = failedRule_[ia] != FailedBondRule::Keep;
+    if (failedRule_[ia] == FailedBondRule::Cut && factor < kDetachedStepFactor) spans = false;
     detached_[ia] = spans ? 0 : 1;
     G_[ia] = spans ? pm.G : Mat3::Zero();
+    stepFactor_[ia] = spans && byDamage ? factor : 1.0;
 }
 
 void BrittleBonds::attach(const State& state) {
@@ -132,6 +155,9 @@ void BrittleBonds::attach(const State& state) {
         throw InputError("state has " + std::to_string(state.bondIntact.size()) +
                          " bond flags for " + std::to_string(ref_.pairs.pairs()) + " pairs");
     parallelFor(ref_.size(), [&](Index a) { refreshParticle(state, a); });
+    // Cut: the next call tries every failed particle again (the bonds it cut are broken
+    // already, the others stay), so a resumed run cuts exactly what the uninterrupted one does.
+    std::fill(failedSeen_.begin(), failedSeen_.end(), std::uint8_t{0});
     brokenPairs_ = 0;
     for (Index a = 0; a < ref_.size(); ++a)
         for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a); ++k)
@@ -164,6 +190,40 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
     // Johnson–Cook failure (D ≥ 1); the rule is the body's (pairs never join two bodies).
     const bool damageKnown = state.damage.size() == stretch_.size();
     const auto failed = [&](std::size_t i) { return damageKnown && state.damage[i] >= 1.0; };
+    // Cut: the particles failed since the last call, and the particles next to one of them
+    // (a bond (b, c) is tried when b or c is).
+    const bool cutting = anyCut_ && damageKnown;
+    if (cutting) {
+        parallelFor(ref_.size(), [&](Index a) {
+            const auto ia = static_cast<std::size_t>(a);
+            newlyFailed_[ia] = failed(ia) && failedSeen_[ia] == 0 ? 1 : 0;
+        });
+        parallelFor(ref_.size(), [&](Index a) {
+            const auto ia = static_cast<std::size_t>(a);
+            std::uint8_t near = 0;
+            if (failedRule_[ia] == FailedBondRule::Cut)
+                for (Index k = P.begin(a); k < P.end(a) && near == 0; ++k)
+                    near = newlyFailed_[static_cast<std::size_t>(
+                        P.neighbor[static_cast<std::size_t>(k)])];
+            nearNewlyFailed_[ia] = near;
+        });
+    }
+    // Cut: does a particle failed since the last call, a neighbour of b or of c, lie in the
+    // cell the segment X_b → X_c passes through? From the lower index, for the same bits.
+    const auto cutByFailed = [&](std::size_t ib, std::size_t ic) {
+        if (nearNewlyFailed_[ib] == 0 && nearNewlyFailed_[ic] == 0) return false;
+        const std::size_t lo = std::min(ib, ic), hi = std::max(ib, ic);
+        const Vec3 &p = ref_.X[lo], &q = ref_.X[hi];
+        for (const std::size_t end : {lo, hi}) {
+            const auto e = static_cast<Index>(end);
+            for (Index k = P.begin(e); k < P.end(e); ++k) {
+                const auto f = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+                if (newlyFailed_[f] == 0 || f == ib || f == ic) continue;
+                if (segmentPassesNear(p, q, ref_.X[f], kCutRadius * ref_.spacing[f])) return true;
+            }
+        }
+        return false;
+    };
     // Each particle reads and writes only its own CSR entries (its old K:∇v before writing
     // them); (a, b) and (b, a) compare the same squared lengths and the same two damages, so
     // both sides decide alike.
@@ -179,7 +239,10 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
         const auto breaks = [&](Index k) {
             if (intact[k] == 0) return false;
             const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
-            if (rule == FailedBondRule::Either && (selfFailed || failed(b))) return true;
+            if ((rule == FailedBondRule::Either || rule == FailedBondRule::Cut) &&
+                (selfFailed || failed(b)))
+                return true;
+            if (rule == FailedBondRule::Cut && cutting && cutByFailed(ia, b)) return true;
             if (rule == FailedBondRule::Both && selfFailed && failed(b)) return true;
             return limit > 0.0 && stretched(ia, k, factor);
         };
@@ -194,6 +257,11 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
             }
         }
     });
+    if (cutting)
+        parallelFor(ref_.size(), [&](Index a) {
+            const auto ia = static_cast<std::size_t>(a);
+            if (newlyFailed_[ia] != 0) failedSeen_[ia] = 1;
+        });
     // Both sides of a pair break in the same call: each fresh pair is counted twice.
     Index freshEntries = 0;
     for (Index c : changed_) freshEntries += c;

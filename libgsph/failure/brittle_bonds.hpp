@@ -10,8 +10,9 @@
 // what derives from it: G per particle, which particles lost a bond (they leave the stencil
 // fast path for the masked CSR path), and which are detached (their surviving bonds no
 // longer span the space: |det B| fell below kDetachedCorrection of its intact value, or M
-// inverts). A detached particle carries no stress and keeps its last F; its surviving bonds
-// still move it with its neighbours.
+// inverts; with FailedBondRule::Cut, also once G has grown fourfold, kDetachedStepFactor). A
+// detached particle carries no stress and keeps its last F; its surviving bonds still move it with
+// its neighbours.
 //
 // Both directions of a pair evaluate the same stretch from the same positions, so a and b
 // always agree without writing each other's entries: the check runs in parallel and gives the
@@ -25,8 +26,16 @@
 // bonds still tie the two sides of a shear band together. With Either it loses every bond and
 // is detached: it keeps its mass and momentum, meets other bodies through contact, and no longer
 // ties the pieces together. With Both, a band of failed particles at least two wide cuts the
-// bonds across it, and a single failed particle inside sound material keeps its bonds. No
-// particle is removed. The damage of t_n decides at the drift of step n+1.
+// bonds across it, and a single failed particle inside sound material keeps its bonds. With Cut,
+// as with Either, and the bond of any pair (b, c) also breaks once its reference segment passes
+// through the cell of a failed particle f (within kCutRadius of f's spacing): a band of failed
+// particles one wide, narrower than the kernel support, then cuts the load path across it (with
+// Either the sound particles on both sides of such a band keep the bonds that span it, and the
+// sliding of the two sides shears their F without bound). The candidates f are the failed
+// neighbours of b and of c (a failed particle that close to the segment is a neighbour of one
+// end); only particles that failed since the last call are tried, since a bond that an earlier
+// failure did not cut stays uncut by it. No particle is removed. The damage of t_n decides at
+// the drift of step n+1.
 //
 // Energy released (docs/theory.md "Fracture energy"): the step that breaks bonds kicks with
 // the old bonds' force f_n in its first half and the new bonds' in its second, while the
@@ -59,7 +68,21 @@ enum class FailedBondRule : std::uint8_t {
     Keep = 0,    ///< never: failed particles keep their bonds
     Either = 1,  ///< once a or b has failed (D ≥ 1)
     Both = 2,    ///< once a and b have failed
+    /// As Either, and also once the reference segment X_a → X_b passes within kCutRadius of the
+    /// reference spacing of a failed third particle f (the failed particle's cell): a band of
+    /// failed particles one wide cuts every bond across it (see above).
+    Cut = 3,
 };
+
+/// Cut: a failed particle f cuts the bonds whose reference segment passes closer to X_f than
+/// this fraction of f's smallest spacing. 0.6 cuts every bond of the kernel support (2.4 cells)
+/// across a plane of failed particles of a cubic lattice (the worst crossing passes 0.577 Δx
+/// from the nearest lattice point of the plane) and no bond between two particles on one side.
+inline constexpr double kCutRadius = 0.6;
+
+/// True when the segment p → q passes within `radius` of f. Evaluate it with p the end of the
+/// lower index, so that both sides of a pair compute the same bits.
+bool segmentPassesNear(const Vec3& p, const Vec3& q, const Vec3& f, double radius);
 
 /// What one call of breakStretchedBonds did.
 struct BondBreak {
@@ -111,6 +134,11 @@ class BrittleBonds {
   public:
     /// |det B| of a particle's surviving bonds below this fraction of its intact value: detached.
     static constexpr double kDetachedCorrection = 1e-3;
+    /// In a body with FailedBondRule::Cut, a particle is also detached once ‖G_ref‖_F / ‖G‖_F
+    /// falls below this: its surviving bonds leave F ill-conditioned (a particle next to a plane
+    /// cut keeps 0.63–0.66, measured), and its stiffness, growing as ‖G‖², sets the time step of
+    /// the whole run (plate perforation without it: G 5–12× its intact size, Δt 40× below Δt0).
+    static constexpr double kDetachedStepFactor = 0.25;
 
     /// `stretchByParticle`: εmax of each particle's body (0 = unbreakable), from the body ranges;
     /// `failedRuleByParticle` (empty: Keep everywhere): the particle's body's FailedBondRule.
@@ -139,6 +167,13 @@ class BrittleBonds {
     /// surviving bonds. Over a different set of bonds a non-affine motion gives another F, and
     /// a pressure that is a function of J (the equations of state of Johnson–Cook bodies) would
     /// jump with it, creating energy (docs/theory.md "Ductile fracture").
+    /// Stable-step length factor of particle a, min(1, ‖G_ref‖_F / ‖G‖_F): a particle whose
+    /// surviving bonds leave its correction ill-conditioned has a larger G, and its pair forces
+    /// a stiffness that grows as ‖G‖² (the time step scales its length by this). 1 outside the
+    /// bodies with a FailedBondRule other than Keep.
+    double stepFactor(Index a) const {
+        return enabled_ ? stepFactor_[static_cast<std::size_t>(a)] : 1.0;
+    }
     bool integratesF(Index a) const {
         const auto ia = static_cast<std::size_t>(a);
         return enabled_ && damaged_[ia] != 0 && failedRule_[ia] != FailedBondRule::Keep;
@@ -158,10 +193,14 @@ class BrittleBonds {
     bool enabled_ = false;
     std::vector<Mat3> G_;
     std::vector<std::uint8_t> damaged_, detached_;
-    std::vector<Index> changed_;       ///< per particle: bonds broken by the current call
-    std::vector<double> released_;     ///< per particle: its share of the released energy
-    std::vector<double> partialSums_;  ///< scratch of deterministicSum
-    std::vector<double> intactDetB_;   ///< |det B| with every bond, per particle
+    std::vector<Index> changed_;            ///< per particle: bonds broken by the current call
+    std::vector<double> released_;          ///< per particle: its share of the released energy
+    std::vector<double> partialSums_;       ///< scratch of deterministicSum
+    std::vector<double> intactDetB_;        ///< |det B| with every bond, per particle
+    std::vector<double> stepFactor_;        ///< per particle, see stepFactor
+    std::vector<std::uint8_t> failedSeen_;  ///< Cut: failed at the last call (D ≥ 1)
+    std::vector<std::uint8_t> newlyFailed_, nearNewlyFailed_;  ///< Cut: scratch of one call
+    bool anyCut_ = false;                                      ///< some body's rule is Cut
     Index brokenPairs_ = 0;
 };
 

@@ -70,7 +70,10 @@ void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const M
     w.factors.density[ia] = point.density;
     w.factors.soundSpeed[ia] = model.waveSpeed(point);
     w.fields.F.set(ia, F);
-    w.lengthScale[ia] = s.ref.spacing[ia] * smallestStretchBound(C, J);
+    // A particle whose surviving bonds raise its G stiffens its pair forces as ‖G‖²
+    // (failure/brittle_bonds.hpp, stepFactor).
+    w.lengthScale[ia] =
+        s.ref.spacing[ia] * smallestStretchBound(C, J) * s.bonds.stepFactor(static_cast<Index>(ia));
     w.failure[ia] =
         static_cast<std::uint8_t>(point.cauchy.allFinite() ? Failure::None : Failure::NotFinite);
 }
@@ -108,8 +111,11 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
 
 // A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
 // still needs a sound speed and a length for the time step. The elastic energy its stress
-// stored, V J ψ(σ), is released when σ is set to zero: booked as this step's fracture energy
-// (zero on later steps, σ being zero then).
+// stored is released when σ is set to zero: V J (ψ(σ) − ψ(0)) at its kept F, booked as this
+// step's fracture energy (zero on later steps, σ being zero then). The part ψ(0) of the kept F
+// (the equation of state's compression energy of a Johnson–Cook particle, a function of J
+// alone) stays in the elastic energy, constant from then on; booking all of ψ(σ) would book
+// that part again on every step of a compressed detached particle.
 template <class Model>
 void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     StepWorkspace& w = s.work;
@@ -118,7 +124,9 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     point.cauchy = s.state.cauchy[ia];
     point.density = model.elastic().density / J;
     if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
-    w.fractureEnergy[ia] = s.ref.quadVolume[ia] * J * model.storedEnergyDensity(point);
+    const double stored = model.storedEnergyDensity(point);
+    point.cauchy.setZero();
+    w.fractureEnergy[ia] = s.ref.quadVolume[ia] * J * (stored - model.storedEnergyDensity(point));
     s.state.cauchy[ia].setZero();
     w.factors.N.set(ia, Mat3::Zero());
     w.factors.K.set(ia, Mat3::Zero());

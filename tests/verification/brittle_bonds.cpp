@@ -370,6 +370,82 @@ TEST(BrittleBonds, PrecrackedBlockPulledApartCarriesNoForceAcrossThePatch) {
     EXPECT_EQ(bonds.brokenPairs(), across);               // εmax = 0: nothing else breaks
 }
 
+// The cut rule (FailedBondRule::Cut): a layer of failed particles one wide, narrower than the
+// kernel support (2.4 cells), cuts every bond across it, and no bond between two sound particles
+// on one side; both directions of a pair agree; the two sides end in different pieces. With
+// Either the same layer leaves the bonds that span it (sound particle to sound particle), which
+// is what keeps a plug tied to its plate (docs/theory.md "Plate perforation"). A second call, or
+// a fresh BrittleBonds attached to the cut state (a restart), cuts nothing more.
+TEST(BrittleBonds, CutRuleSeversEveryBondAcrossAOneWideFailedLayer) {
+    const Reference ref =
+        testing::builtReference(gradedBoxMap(Vec3(1.0, 0.6, 0.4), {}), 3, {10, 6, 4});
+    const auto n = static_cast<std::size_t>(ref.size());
+    const auto layer = [&](std::size_t a) { return std::abs(ref.X[a][0] - 0.45) < 0.01; };
+    const auto side = [&](std::size_t a) {
+        return ref.X[a][0] < 0.4 ? -1 : ref.X[a][0] > 0.5 ? 1 : 0;
+    };
+    const auto cutState = [&](FailedBondRule rule, Index& fresh, Index& again) {
+        State state = State::atRest(ref.X, static_cast<std::size_t>(ref.pairs.pairs()));
+        state.dt = 1e-7;
+        for (std::size_t a = 0; a < n; ++a)
+            if (layer(a)) state.damage[a] = 1.0;
+        BrittleBonds bonds(ref, std::vector<double>(n, 0.0), std::vector<FailedBondRule>(n, rule));
+        bonds.attach(state);
+        fresh = bonds.breakStretchedBonds(state).pairs;
+        again = bonds.breakStretchedBonds(state).pairs;
+        BrittleBonds resumed(ref, std::vector<double>(n, 0.0),
+                             std::vector<FailedBondRule>(n, rule));
+        resumed.attach(state);
+        again += resumed.breakStretchedBonds(state).pairs;
+        for (std::size_t a = 0; a < n; ++a)
+            if (layer(a)) {
+                EXPECT_TRUE(bonds.detached(static_cast<Index>(a))) << a;
+            }
+        return state.bondIntact;
+    };
+    for (const FailedBondRule rule : {FailedBondRule::Cut, FailedBondRule::Either}) {
+        Index fresh = 0, again = 0;
+        const std::vector<std::uint8_t> intact = cutState(rule, fresh, again);
+        Index across = 0, sameSideBroken = 0, asymmetric = 0, failedKept = 0;
+        for (Index a = 0; a < ref.size(); ++a)
+            for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
+                const auto ia = static_cast<std::size_t>(a);
+                const auto b =
+                    static_cast<std::size_t>(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
+                const bool holds = intact[static_cast<std::size_t>(k)] != 0;
+                if (holds && side(ia) * side(b) < 0) ++across;
+                if (!holds && side(ia) == side(b) && side(ia) != 0) ++sameSideBroken;
+                if (holds && (layer(ia) || layer(b))) ++failedKept;
+                for (Index m = ref.pairs.begin(static_cast<Index>(b));
+                     m < ref.pairs.end(static_cast<Index>(b)); ++m)
+                    if (ref.pairs.neighbor[static_cast<std::size_t>(m)] == a &&
+                        intact[static_cast<std::size_t>(m)] != intact[static_cast<std::size_t>(k)])
+                        ++asymmetric;
+            }
+        const std::vector<Index> piece = bondPieces(ref, intact);
+        Index leftRoot = -1, rightRoot = -1;
+        for (std::size_t a = 0; a < n; ++a) {
+            if (side(a) < 0) leftRoot = piece[a];
+            if (side(a) > 0) rightRoot = piece[a];
+        }
+        std::printf(
+            "[bonds] one-wide failed layer, %s: %d pairs broken, %d entries across still "
+            "intact, %d broken on one side\n",
+            rule == FailedBondRule::Cut ? "cut" : "either", fresh, across, sameSideBroken);
+        EXPECT_EQ(failedKept, 0);
+        EXPECT_EQ(asymmetric, 0);
+        EXPECT_EQ(sameSideBroken, 0);
+        EXPECT_EQ(again, 0) << "a second call or a restart cut more";
+        if (rule == FailedBondRule::Cut) {
+            EXPECT_EQ(across, 0) << "bonds across the failed layer survive the cut";
+            EXPECT_NE(leftRoot, rightRoot) << "the two sides are still one piece";
+        } else {
+            EXPECT_GT(across, 0);  // Either: the bonds spanning the layer hold
+            EXPECT_EQ(leftRoot, rightRoot);
+        }
+    }
+}
+
 // Ductile fracture (issue #9): with FailedBondRule::Either, every bond of a Johnson–Cook particle
 // breaks once its damage reaches 1. A steel bar (Weldox 460E strength, damage constants scaled
 // down so that it fails within a short pull: εf ≈ 0.15 at σ* = 1/3; 10 × 2 × 2 mm, 25 × 5 × 5
@@ -387,7 +463,7 @@ struct DuctileBar {
     EnergyReport energy;
 };
 
-DuctileBar pullDuctileBar(bool failedParticlesLoseBonds) {
+DuctileBar pullDuctileBar(FailedBondRule rule) {
     const JohnsonCook steel =
         testing::withLinearEos(testing::kWeldoxElastic, testing::weldoxParams(),
                                JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}});
@@ -395,8 +471,7 @@ DuctileBar pullDuctileBar(bool failedParticlesLoseBonds) {
     SolverOptions options;
     options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;
-    options.failedBonds = {failedParticlesLoseBonds ? FailedBondRule::Either
-                                                    : FailedBondRule::Keep};
+    options.failedBonds = {rule};
     Simulation sim(
         latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 7850.0, 1.2),
         {steel}, options);
@@ -446,18 +521,20 @@ DuctileBar pullDuctileBar(bool failedParticlesLoseBonds) {
         }
     }
     std::printf(
-        "[bonds] ductile bar (failed particles lose bonds: %s): t = %.1f µs, %d failed, %d "
+        "[bonds] ductile bar (failed_bonds %s): t = %.1f µs, %d failed, %d "
         "detached, %d pairs broken, ends %s; boundary work %.4f J, plastic %.4f, damage %.5f, "
         "fracture %.5f, viscous %.4f J; worst imbalance %.2e of the energy moved\n",
-        failedParticlesLoseBonds ? "yes" : "no", 1e6 * s.time, out.failed, out.detached, out.broken,
-        out.apart ? "apart" : "joined", out.energy.boundaryWork, out.energy.plasticWork,
-        out.energy.damageDissipation, out.energy.fractureEnergy, out.energy.viscousWork,
-        out.worstImbalance / out.scale);
+        rule == FailedBondRule::Keep     ? "keep"
+        : rule == FailedBondRule::Either ? "either"
+                                         : "cut",
+        1e6 * s.time, out.failed, out.detached, out.broken, out.apart ? "apart" : "joined",
+        out.energy.boundaryWork, out.energy.plasticWork, out.energy.damageDissipation,
+        out.energy.fractureEnergy, out.energy.viscousWork, out.worstImbalance / out.scale);
     return out;
 }
 
 TEST(BrittleBonds, FailedParticlesLoseTheirBondsAndTheDuctileBarComesApart) {
-    const DuctileBar bar = pullDuctileBar(true);
+    const DuctileBar bar = pullDuctileBar(FailedBondRule::Either);
     EXPECT_GT(bar.failed, 0);
     EXPECT_TRUE(bar.apart) << "the two ends are still joined";
     EXPECT_GT(bar.broken, 0);
@@ -465,11 +542,22 @@ TEST(BrittleBonds, FailedParticlesLoseTheirBondsAndTheDuctileBarComesApart) {
     EXPECT_EQ(bar.failedWithBonds, 0) << "a failed particle kept a bond";
     EXPECT_GE(bar.detached, bar.failed);
     EXPECT_LT(bar.worstImbalance, 1e-2 * bar.scale);
-    const DuctileBar kept = pullDuctileBar(false);
+    const DuctileBar kept = pullDuctileBar(FailedBondRule::Keep);
     EXPECT_GT(kept.failed, 0);
     EXPECT_EQ(kept.broken, 0);
     EXPECT_FALSE(kept.apart);
     EXPECT_EQ(kept.energy.fractureEnergy, 0.0);
+}
+
+// The same pull with the cut rule: the bar comes apart, nothing inverts (the run would throw),
+// every failed particle is detached, and the ledger closes as with Either.
+TEST(BrittleBonds, CutRuleBarComesApartWithTheLedgerClosed) {
+    const DuctileBar bar = pullDuctileBar(FailedBondRule::Cut);
+    EXPECT_GT(bar.failed, 0);
+    EXPECT_TRUE(bar.apart) << "the two ends are still joined";
+    EXPECT_EQ(bar.failedWithBonds, 0) << "a failed particle kept a bond";
+    EXPECT_GE(bar.detached, bar.failed);
+    EXPECT_LT(bar.worstImbalance, 1e-2 * bar.scale);
 }
 
 }  // namespace
