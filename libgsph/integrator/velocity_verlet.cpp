@@ -184,20 +184,11 @@ std::string particleAndTime(const Reference& ref, Index a, double time) {
     return text;
 }
 
-// εmax of each particle from the per-body list (bodies without an entry never break).
-std::vector<double> stretchByParticle(const Reference& ref, const std::vector<double>& byBody) {
-    std::vector<double> out(static_cast<std::size_t>(ref.size()), 0.0);
-    for (std::size_t a = 0; a < out.size(); ++a) {
-        const auto body = static_cast<std::size_t>(ref.body[a]);
-        if (body < byBody.size()) out[a] = byBody[body];
-    }
-    return out;
-}
-
-// Per particle: its body's rule for bonds of failed particles (Keep without an entry).
-std::vector<FailedBondRule> failedRuleByParticle(const Reference& ref,
-                                                 const std::vector<FailedBondRule>& byBody) {
-    std::vector<FailedBondRule> out(static_cast<std::size_t>(ref.size()), FailedBondRule::Keep);
+// A per-body setting spread over the particles; bodies without an entry get `fallback` (εmax 0:
+// never break; FailedBondRule::Keep).
+template <class T>
+std::vector<T> byParticle(const Reference& ref, const std::vector<T>& byBody, T fallback) {
+    std::vector<T> out(static_cast<std::size_t>(ref.size()), fallback);
     for (std::size_t a = 0; a < out.size(); ++a) {
         const auto body = static_cast<std::size_t>(ref.body[a]);
         if (body < byBody.size()) out[a] = byBody[body];
@@ -222,8 +213,9 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       bodies_(std::move(bodies)),
       constraints_(std::move(constraints)),
       options_(options),
-      bonds_(ref, stretchByParticle(ref, options_.bondStretch),
-             failedRuleByParticle(ref, options_.failedBonds), !options_.precracks.empty()) {
+      bonds_(ref, byParticle(ref, options_.bondStretch, 0.0),
+             byParticle(ref, options_.failedBonds, FailedBondRule::Keep),
+             !options_.precracks.empty()) {
     if (!(options_.cfl > 0.0 && options_.cfl <= 1.0))
         throw InputError("CFL number must lie in (0, 1], got " + std::to_string(options_.cfl));
     if (options_.hourglass < 0.0) throw InputError("hourglass coefficient must be ≥ 0");

@@ -27,6 +27,7 @@
 #include "io/snapshot.hpp"
 #include "kinematics/deformation_gradient.hpp"
 #include "simulation.hpp"
+#include "support/ductile_bar.hpp"
 #include "support/johnson_cook_materials.hpp"
 #include "support/lattice_fixtures.hpp"
 
@@ -464,27 +465,10 @@ struct DuctileBar {
 };
 
 DuctileBar pullDuctileBar(FailedBondRule rule) {
-    const JohnsonCook steel =
-        testing::withLinearEos(testing::kWeldoxElastic, testing::weldoxParams(),
-                               JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}});
-    const double length = 0.01, width = 0.002, spacing = length / 25, v = 20.0;
-    SolverOptions options;
-    options.viscosity = {1.0, 1.0};
-    options.hourglass = 0.1;
-    options.failedBonds = {rule};
-    Simulation sim(
-        latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 7850.0, 1.2),
-        {steel}, options);
+    testing::PulledWeldoxBar bar({rule});
+    Simulation& sim = bar.sim;
     const Reference& ref = sim.reference();
-    std::vector<Index> left, right;
-    for (Index a = 0; a < ref.size(); ++a) {
-        const double X = ref.X[static_cast<std::size_t>(a)][0];
-        if (X < spacing) left.push_back(a);
-        if (X > length - spacing) right.push_back(a);
-    }
-    sim.constrain({"left", left, [&](double, const Vec3&) { return Vec3(-v, 0, 0); }});
-    sim.constrain({"right", right, [&](double, const Vec3&) { return Vec3(v, 0, 0); }});
-    sim.setVelocity([&](const Vec3& X) { return Vec3(v * (2 * X[0] / length - 1), 0, 0); });
+    const std::vector<Index>&left = bar.left, &right = bar.right;
     const auto endsApart = [&](const State& s) {
         const std::vector<Index> piece = bondPieces(ref, s.bondIntact);
         return piece[static_cast<std::size_t>(left.front())] !=

@@ -15,6 +15,7 @@
 
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/ductile_bar.hpp"
 #include "support/johnson_cook_materials.hpp"
 
 namespace gsph {
@@ -75,23 +76,8 @@ TEST(PlasticEnergy, PlasticImpactOnARigidSupportBalancesItsEnergy) {
 TEST(PlasticEnergy, DuctileTensionToFailureBalancesItsEnergy) {
     // Weldox 460E strength (Børvik et al. 2001) with damage constants scaled down so that the
     // bar fails within a short pull (εf ≈ 0.15 at σ* = 1/3); ends pulled apart at ±20 m/s.
-    const JohnsonCook steel =
-        testing::withLinearEos(testing::kWeldoxElastic, testing::weldoxParams(),
-                               JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}});
-    const double length = 0.01, width = 0.002, spacing = length / 25, v = 20.0;
-    SolverOptions options;
-    options.viscosity = {1.0, 1.0};
-    options.hourglass = 0.1;
-    Simulation sim(
-        latticeReference(gradedBoxMap(Vec3(length, width, width), {}), 3, {25, 5, 5}, 7850.0, 1.2),
-        {steel}, options);
-    const Reference& ref = sim.reference();
-    sim.constrain({"left", particlesWhere(ref, [&](const Vec3& X) { return X[0] < spacing; }),
-                   [&](double, const Vec3&) { return Vec3(-v, 0, 0); }});
-    sim.constrain({"right",
-                   particlesWhere(ref, [&](const Vec3& X) { return X[0] > length - spacing; }),
-                   [&](double, const Vec3&) { return Vec3(v, 0, 0); }});
-    sim.setVelocity([&](const Vec3& X) { return Vec3(v * (2 * X[0] / length - 1), 0, 0); });
+    testing::PulledWeldoxBar bar;
+    Simulation& sim = bar.sim;
     sim.start();
     const EnergyReport e0 = sim.energy();
     double worst = 0.0, scale = e0.kinetic;
