@@ -117,9 +117,17 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
         newlyFailed_.assign(n, 0);
         nearNewlyFailed_.assign(n, 0);
     }
+    if (anyCut_) cellFrame_.resize(n);
     parallelFor(ref.size(), [&](Index a) {
-        intactDetB_[static_cast<std::size_t>(a)] =
-            std::abs(particleMetric(ref_, a).B.determinant());
+        const auto ia = static_cast<std::size_t>(a);
+        const ParticleMetric pm = particleMetric(ref_, a);
+        intactDetB_[ia] = std::abs(pm.B.determinant());
+        // Cut: offsets in cell units of the particle's own lattice, (Δθ M)^{-1} (X − X_f), so
+        // that "within kCutRadius of the cell" follows a stretched cell in every direction.
+        if (anyCut_) {
+            const double dtheta = ref_.spaces[static_cast<std::size_t>(ref_.space[ia])].dtheta;
+            cellFrame_[ia] = (dtheta * pm.M).inverse();
+        }
     });
 }
 
@@ -219,7 +227,10 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
             for (Index k = P.begin(e); k < P.end(e); ++k) {
                 const auto f = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
                 if (newlyFailed_[f] == 0 || f == ib || f == ic) continue;
-                if (segmentPassesNear(p, q, ref_.X[f], kCutRadius * ref_.spacing[f])) return true;
+                const Mat3& toCells = cellFrame_[f];
+                if (segmentPassesNear(toCells * (p - ref_.X[f]), toCells * (q - ref_.X[f]),
+                                      Vec3::Zero(), kCutRadius))
+                    return true;
             }
         }
         return false;

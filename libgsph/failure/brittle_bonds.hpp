@@ -28,7 +28,9 @@
 // ties the pieces together. With Both, a band of failed particles at least two wide cuts the
 // bonds across it, and a single failed particle inside sound material keeps its bonds. With Cut,
 // as with Either, and the bond of any pair (b, c) also breaks once its reference segment passes
-// through the cell of a failed particle f (within kCutRadius of f's spacing): a band of failed
+// through the cell of a failed particle f (within kCutRadius, measured in f's cells: the offset
+// from X_f mapped by (Δθ M_f)^{-1}, so a cell stretched by the layout is cut along its own
+// sizes, not within a sphere of its smallest spacing): a band of failed
 // particles one wide, narrower than the kernel support, then cuts the load path across it (with
 // Either the sound particles on both sides of such a band keep the bonds that span it, and the
 // sliding of the two sides shears their F without bound). The candidates f are the failed
@@ -68,16 +70,17 @@ enum class FailedBondRule : std::uint8_t {
     Keep = 0,    ///< never: failed particles keep their bonds
     Either = 1,  ///< once a or b has failed (D ≥ 1)
     Both = 2,    ///< once a and b have failed
-    /// As Either, and also once the reference segment X_a → X_b passes within kCutRadius of the
-    /// reference spacing of a failed third particle f (the failed particle's cell): a band of
+    /// As Either, and also once the reference segment X_a → X_b passes within kCutRadius cells
+    /// of a failed third particle f (in f's lattice, (Δθ M_f)^{-1}(X − X_f)): a band of
     /// failed particles one wide cuts every bond across it (see above).
     Cut = 3,
 };
 
 /// Cut: a failed particle f cuts the bonds whose reference segment passes closer to X_f than
-/// this fraction of f's smallest spacing. 0.6 cuts every bond of the kernel support (2.4 cells)
-/// across a plane of failed particles of a cubic lattice (the worst crossing passes 0.577 Δx
-/// from the nearest lattice point of the plane) and no bond between two particles on one side.
+/// this many of f's cells (offsets mapped to f's lattice by (Δθ M_f)^{-1}). 0.6 cuts every bond of
+/// the kernel support (2.4 cells) across a plane of failed particles of a cubic lattice (the worst
+/// crossing passes 0.577 Δx from the nearest lattice point of the plane) and no bond between two
+/// particles on one side.
 inline constexpr double kCutRadius = 0.6;
 
 /// True when the segment p → q passes within `radius` of f. Evaluate it with p the end of the
@@ -200,7 +203,8 @@ class BrittleBonds {
     std::vector<double> stepFactor_;        ///< per particle, see stepFactor
     std::vector<std::uint8_t> failedSeen_;  ///< Cut: failed at the last call (D ≥ 1)
     std::vector<std::uint8_t> newlyFailed_, nearNewlyFailed_;  ///< Cut: scratch of one call
-    bool anyCut_ = false;                                      ///< some body's rule is Cut
+    std::vector<Mat3> cellFrame_;  ///< Cut: (Δθ M)^{-1} per particle, physical → cell units
+    bool anyCut_ = false;          ///< some body's rule is Cut
     Index brokenPairs_ = 0;
 };
 

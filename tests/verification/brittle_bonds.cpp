@@ -377,9 +377,17 @@ TEST(BrittleBonds, PrecrackedBlockPulledApartCarriesNoForceAcrossThePatch) {
 // Either the same layer leaves the bonds that span it (sound particle to sound particle), which
 // is what keeps a plug tied to its plate (docs/theory.md "Plate perforation"). A second call, or
 // a fresh BrittleBonds attached to the cut state (a restart), cuts nothing more.
-TEST(BrittleBonds, CutRuleSeversEveryBondAcrossAOneWideFailedLayer) {
+//
+// The same on a stretched lattice (cells 0.1 × 0.3 × 0.1, as the rings of an O-grid graded
+// radially): the cut is measured in the failed particle's own cells, so the bonds that cross
+// the layer between two of its particles, 0.15 from each along y, are cut too (a sphere of 0.6 of
+// the smallest spacing, 0.06, left them).
+class CutRuleOnALattice : public ::testing::TestWithParam<double> {};
+
+TEST_P(CutRuleOnALattice, SeversEveryBondAcrossAOneWideFailedLayer) {
+    const double width = GetParam();  // along y, 6 cells
     const Reference ref =
-        testing::builtReference(gradedBoxMap(Vec3(1.0, 0.6, 0.4), {}), 3, {10, 6, 4});
+        testing::builtReference(gradedBoxMap(Vec3(1.0, width, 0.4), {}), 3, {10, 6, 4});
     const auto n = static_cast<std::size_t>(ref.size());
     const auto layer = [&](std::size_t a) { return std::abs(ref.X[a][0] - 0.45) < 0.01; };
     const auto side = [&](std::size_t a) {
@@ -430,9 +438,10 @@ TEST(BrittleBonds, CutRuleSeversEveryBondAcrossAOneWideFailedLayer) {
             if (side(a) > 0) rightRoot = piece[a];
         }
         std::printf(
-            "[bonds] one-wide failed layer, %s: %d pairs broken, %d entries across still "
-            "intact, %d broken on one side\n",
-            rule == FailedBondRule::Cut ? "cut" : "either", fresh, across, sameSideBroken);
+            "[bonds] one-wide failed layer, cells 0.1 x %.2f x 0.1, %s: %d pairs broken, %d "
+            "entries across still intact, %d broken on one side\n",
+            width / 6.0, rule == FailedBondRule::Cut ? "cut" : "either", fresh, across,
+            sameSideBroken);
         EXPECT_EQ(failedKept, 0);
         EXPECT_EQ(asymmetric, 0);
         EXPECT_EQ(sameSideBroken, 0);
@@ -446,6 +455,12 @@ TEST(BrittleBonds, CutRuleSeversEveryBondAcrossAOneWideFailedLayer) {
         }
     }
 }
+
+INSTANTIATE_TEST_SUITE_P(BrittleBonds, CutRuleOnALattice, ::testing::Values(0.6, 1.8),
+                         [](const ::testing::TestParamInfo<double>& param) {
+                             return param.param < 1.0 ? std::string("CubicCells")
+                                                      : std::string("StretchedCells");
+                         });
 
 // Ductile fracture (issue #9): with FailedBondRule::Either, every bond of a Johnson–Cook particle
 // breaks once its damage reaches 1. A steel bar (Weldox 460E strength, damage constants scaled
