@@ -2,10 +2,11 @@
 // at its centre by a blunt hardened-steel cylinder (Børvik et al. 1999: 12 mm plate, 20 mm ×
 // 80 mm projectile of 197 g).
 //
-//   gsph-preproc plate_perforation.geo -o perforation.h5                   (GSPH layout)
-//   gsph-preproc plate_perforation.geo -o uniform.h5 --lattice 1e-3        (uniform, same h)
+//   gsph-preproc plate_perforation.geo -o perforation.h5        (GSPH, shear-zone layout: the default)
+//   gsph-preproc plate_perforation.geo -o plain.h5 --set hs=0   (GSPH, plain ring of cells h)
+//   gsph-preproc plate_perforation.geo -o uniform.h5 --set hs=0 --lattice 2e-3  (uniform, same h)
 //
-// Plate: z in [-Tp, 0], axis z, radius R (the clamped rim; the experiment clamps at 500 mm:
+// Plate: z in [-Tp, 0], axis z, radius R (the clamped rim; the experiment's frame: r = 250 mm;
 // a smaller R keeps the run cheap, docs/theory.md "Plate perforation"). It is an O-grid:
 //   * a square Cartesian core [-c, c]² (fine cells, ≈ h),
 //   * ring 1 from the core's sides to the circle r1 (fine radial cells; the projectile's edge,
@@ -30,8 +31,8 @@
 DefineConstant[
   R = {0.05, Name "Parameters/R"},            // plate radius: the clamped rim [m]
   Tp = {0.012, Name "Parameters/Tp"},         // plate thickness [m]
-  h = {0.001, Name "Parameters/h"},           // fine cell size of the plate [m]
-  hs = {0, Name "Parameters/hs"},             // radial cell at r = Rp [m]; 0 (or ≥ h): h
+  h = {0.002, Name "Parameters/h"},           // fine cell size of the plate [m]
+  hs = {0.00067, Name "Parameters/hs"},       // radial cell at r = Rp [m]; 0 (or ≥ h): h
   sgrading = {1.15, Name "Parameters/sgrading"},  // radial cell ratio towards hs at Rp
   c = {0.006, Name "Parameters/c"},           // half-side of the plate's core square [m]
   r1 = {0.014, Name "Parameters/r1"},         // outer radius of the fine ring [m] (hs = 0)

@@ -498,6 +498,45 @@ TEST(Geometries, PlateAndProjectile) {
     for (Index a : f.sets.at("plate_rim")) EXPECT_EQ(f.body[a], 0);
 }
 
+// The perforation plate (issue #9), both layouts. Shear-zone (the defaults: h = 2 mm,
+// hs = 0.67 mm): the ring's radial cells are graded down to hs at r = Rp = 10 mm, so a circle of
+// cell faces lies at Rp and the two particle rows next to it sit ≈ hs/2 inside and outside it,
+// 0.67–0.80 mm apart radially (diagonals–axes); the angular cells there stay ≈ h (32 around).
+// Plain (hs = 0): the 2 mm ring of before, 3016 particles. Both: the plate's volume is its
+// 24- or 32-gon prism's (straight-edged hexes), the rim set is on the plate.
+TEST(Geometries, PlatePerforationShearZoneAndPlainLayouts) {
+    const std::string path = geometry("plate_perforation.geo");
+    for (const double hs : {0.00067, 0.0}) {
+        const Parameters parameters = {{"hs", hs}};
+        const Conversion c = convert(path, parameters);
+        expectMatchesGmsh(path, c, parameters);
+        const ParticleFile& f = c.particles;
+        ASSERT_EQ(f.bodies.size(), 2u);
+        const int sides = hs > 0.0 ? 32 : 24;
+        const double polygon = 0.5 * sides * 0.05 * 0.05 * std::sin(2.0 * M_PI / sides);
+        EXPECT_NEAR(totalVolume(f, 0) / (polygon * 0.012), 1.0, 1e-9) << "hs " << hs;
+        for (Index a : f.sets.at("plate_rim")) EXPECT_EQ(f.body[a], 0);
+        if (hs == 0.0) {
+            EXPECT_EQ(f.size(), 3016);
+            continue;
+        }
+        EXPECT_EQ(f.size(), 6208);
+        // Bottom layer of the plate: the rows nearest Rp, 0.25–0.75 hs inside and outside it
+        // (one ring of 32 particles each), none closer than 0.25 hs to the face circle at Rp.
+        int inside = 0, outside = 0, onTheCircle = 0;
+        for (Index a = 0; a < f.size(); ++a) {
+            if (f.body[a] != 0 || f.X[a][2] > -0.010) continue;
+            const double d = std::hypot(f.X[a][0], f.X[a][1]) - 0.01;
+            if (std::abs(d) < 0.25 * hs) ++onTheCircle;
+            if (d > -0.75 * hs && d < -0.25 * hs) ++inside;
+            if (d > 0.25 * hs && d < 0.75 * hs) ++outside;
+        }
+        EXPECT_EQ(onTheCircle, 0);
+        EXPECT_EQ(inside, 32);
+        EXPECT_EQ(outside, 32);
+    }
+}
+
 TEST(Geometries, MshGivesTheSameParticlesAsGeo) {
     test::TempDir dir;
     const std::string path = geometry("taylor_bar.geo");
