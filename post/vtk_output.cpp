@@ -80,7 +80,7 @@ double scalarField(const Snapshot& s, std::size_t a, const std::string& name) {
     if (name == "plastic_strain") return s.plasticStrain[a];
     if (name == "temperature") return s.temperature[a];
     if (name == "damage") return s.damage[a];
-    if (name == "bond_damage") return s.bondDamage.empty() ? 0.0 : s.bondDamage[a];
+    if (name == "bond_damage") return s.bondDamage[a];
     if (name == "J") return s.F[a].determinant();
     if (name == "body") return s.body[a];
     if (name == "space") return s.space[a];
@@ -139,7 +139,7 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
         ep[a] = snap.plasticStrain[i];
         T[a] = snap.temperature[i];
         D[a] = snap.damage[i];
-        Db[a] = snap.bondDamage.empty() ? 0.0 : snap.bondDamage[i];
+        Db[a] = snap.bondDamage[i];
         detF[a] = snap.F[i].determinant();
         V[a] = snap.volume[i];
         bd[a] = snap.body[i];
