@@ -25,6 +25,11 @@ DefineConstant[
   bump = {0.25, Name "Parameters/bump"}, // < 1: finer at both faces (gmsh "Using Bump")
   refine = {1, Name "Parameters/refine"} // multiplies every cell count (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (L <= 0 || B <= 0 || T <= 0 || a <= 0 || w <= 0 || h <= 0 || bump <= 0 || nz < 1 || refine < 1)
+  Error("bending_plate.geo: needs L, B, T, a, w, h, bump > 0; nz, refine ≥ 1 (got L = %g, B = %g, T = %g, a = %g, w = %g, h = %g, bump = %g, nz = %g, refine = %g)", L, B, T, a, w, h, bump, nz, refine);
+EndIf
 
 // Block boundaries along x: end, support strip, mid-span load strip, support strip, end.
 xs[] = {0, a - w/2, a + w/2, L/2 - w/2, L/2 + w/2, L - a - w/2, L - a + w/2, L};

@@ -18,6 +18,11 @@ DefineConstant[
   grading = {1.1, Name "Parameters/grading"},  // ratio of successive cell lengths from x = 0
   refine = {1, Name "Parameters/refine"}   // multiplies every cell count (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (L <= 0 || W <= 0 || H <= 0 || grading <= 0 || nx < 1 || ny < 1 || nz < 1 || refine < 1)
+  Error("graded_bar.geo: needs L, W, H, grading > 0; nx, ny, nz, refine ≥ 1 (got L = %g, W = %g, H = %g, grading = %g, nx = %g, ny = %g, nz = %g, refine = %g)", L, W, H, grading, nx, ny, nz, refine);
+EndIf
 
 // Keep the same geometric grading when refining: the ratio per cell is grading^(1/refine).
 ratio = grading^(1 / refine);

@@ -43,6 +43,11 @@ DefineConstant[
   nz = {0, Name "Parameters/nz"},           // cells through the thickness (0: Round(T/h))
   refine = {1, Name "Parameters/refine"}    // divides h (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (W <= 0 || H <= 0 || T <= 0 || c <= 0 || d <= 0 || h <= 0 || a <= 0 || coarsen <= 0 || refine < 1 || coarsenX < 0 || coarsenY < 0 || nz < 0)
+  Error("kalthoff_winkler.geo: needs W, H, T, c, d, h, a, coarsen > 0; refine ≥ 1; coarsenX, coarsenY, nz ≥ 0 (got W = %g, H = %g, T = %g, c = %g, d = %g, h = %g, a = %g, coarsen = %g, refine = %g, coarsenX = %g, coarsenY = %g, nz = %g)", W, H, T, c, d, h, a, coarsen, refine, coarsenX, coarsenY, nz);
+EndIf
 hr = h / refine;
 Y = H / 2;
 na = Max(1, Round(a / hr));  // the fine bands hold whole cells of hr

@@ -46,6 +46,11 @@ DefineConstant[
   nz = {3, Name "Parameters/nz"},           // cells through the thickness (not refined)
   refine = {1, Name "Parameters/refine"}    // divides h (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (W <= 0 || H <= 0 || T <= 0 || c <= 0 || d <= 0 || s <= 0 || h <= 0 || coarsen <= 0 || nz < 1 || refine < 1)
+  Error("kalthoff_winkler_slotted.geo: needs W, H, T, c, d, s, h, coarsen > 0; nz, refine ≥ 1 (got W = %g, H = %g, T = %g, c = %g, d = %g, s = %g, h = %g, coarsen = %g, nz = %g, refine = %g)", W, H, T, c, d, s, h, coarsen, nz, refine);
+EndIf
 y1 = d / 2 - s / 2;  // the middle arm's half height (a slot's inner face)
 y2 = d / 2 + s / 2;  // a slot's outer face
 Y = H / 2;

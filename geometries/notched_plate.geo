@@ -27,6 +27,11 @@ DefineConstant[
   grading = {1.05, Name "Parameters/grading"},  // growth of cell height away from the notch
   refine = {1, Name "Parameters/refine"}    // multiplies every cell count (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (W <= 0 || H <= 0 || T <= 0 || c <= 0 || s <= 0 || h <= 0 || grading <= 0 || nz < 1 || refine < 1)
+  Error("notched_plate.geo: needs W, H, T, c, s, h, grading > 0; nz, refine ≥ 1 (got W = %g, H = %g, T = %g, c = %g, s = %g, h = %g, grading = %g, nz = %g, refine = %g)", W, H, T, c, s, h, grading, nz, refine);
+EndIf
 y1 = H / 2 - s / 2;  // slot bottom
 y2 = H / 2 + s / 2;  // slot top
 

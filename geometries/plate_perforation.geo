@@ -43,6 +43,11 @@ DefineConstant[
   pcore = {0.4, Name "Parameters/pcore"},     // projectile core half-side / Rp
   pgrading = {1.08, Name "Parameters/pgrading"}  // ratio of successive axial cells from the nose
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (R <= 0 || Tp <= 0 || h <= 0 || hs < 0)
+  Error("plate_perforation.geo: needs R, Tp, h > 0; hs ≥ 0 (got R = %g, Tp = %g, h = %g, hs = %g)", R, Tp, h, hs);
+EndIf
 
 // Cell counts of the plate from the fine size h (and hs).
 shear = (hs > 0 && hs < h);

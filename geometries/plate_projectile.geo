@@ -29,6 +29,11 @@ DefineConstant[
   nz = {24, Name "Parameters/nz"},            // projectile cells along its axis
   refine = {1, Name "Parameters/refine"}      // multiplies every cell count
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (P <= 0 || Tp <= 0 || bump <= 0 || Rp <= 0 || Lp <= 0 || core <= 0 || np < 1 || ntp < 1 || n < 1 || nr < 1 || nz < 1 || refine < 1 || gap < 0)
+  Error("plate_projectile.geo: needs P, Tp, bump, Rp, Lp, core > 0; np, ntp, n, nr, nz, refine ≥ 1; gap ≥ 0 (got P = %g, Tp = %g, bump = %g, Rp = %g, Lp = %g, core = %g, np = %g, ntp = %g, n = %g, nr = %g, nz = %g, refine = %g, gap = %g)", P, Tp, bump, Rp, Lp, core, np, ntp, n, nr, nz, refine, gap);
+EndIf
 
 // --- Plate: one block, a structured square extruded through the thickness. ---------------------
 Point(1) = {-P/2, -P/2, -Tp};  Point(2) = {P/2, -P/2, -Tp};

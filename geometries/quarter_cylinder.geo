@@ -24,6 +24,11 @@ DefineConstant[
   nz = {1, Name "Parameters/nz"},           // cells along z
   refine = {1, Name "Parameters/refine"}    // multiplies every cell count (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (R <= 0 || core <= 0 || Lz <= 0 || n < 1 || nr < 1 || nz < 1 || refine < 1)
+  Error("quarter_cylinder.geo: needs R, core, Lz > 0; n, nr, nz, refine ≥ 1 (got R = %g, core = %g, Lz = %g, n = %g, nr = %g, nz = %g, refine = %g)", R, core, Lz, n, nr, nz, refine);
+EndIf
 c = core * R;
 
 Point(1) = {0, 0, 0};  Point(2) = {c, 0, 0};  Point(3) = {c, c, 0};  Point(4) = {0, c, 0};

@@ -24,6 +24,11 @@ DefineConstant[
   grading = {1.03, Name "Parameters/grading"},  // ratio of successive cell lengths from z = 0
   refine = {1, Name "Parameters/refine"}      // multiplies every cell count (convergence studies)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (R <= 0 || L <= 0 || core <= 0 || grading <= 0 || n < 1 || nr < 1 || nz < 1 || refine < 1)
+  Error("taylor_bar.geo: needs R, L, core, grading > 0; n, nr, nz, refine ≥ 1 (got R = %g, L = %g, core = %g, grading = %g, n = %g, nr = %g, nz = %g, refine = %g)", R, L, core, grading, n, nr, nz, refine);
+EndIf
 c = core * R;
 s = R / Sqrt(2);
 

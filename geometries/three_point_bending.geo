@@ -41,6 +41,11 @@ DefineConstant[
   ratio = {1.25, Name "Parameters/ratio"},         // largest length ratio of neighbouring cells
   refine = {1, Name "Parameters/refine"}           // divides h (the ramps keep their ratio)
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (L <= 0 || W <= 0 || T <= 0 || S <= 0 || aspect <= 0 || band <= 0 || support <= 0 || support_band <= 0 || across <= 0 || ratio <= 0 || nz < 1 || refine < 1)
+  Error("three_point_bending.geo: needs L, W, T, S, aspect, band, support, support_band, across, ratio > 0; nz, refine ≥ 1 (got L = %g, W = %g, T = %g, S = %g, aspect = %g, band = %g, support = %g, support_band = %g, across = %g, ratio = %g, nz = %g, refine = %g)", L, W, T, S, aspect, band, support, support_band, across, ratio, nz, refine);
+EndIf
 
 h = T / (nz * refine);               // layer thickness = the finest cell length [m]
 h_coarse = aspect * h;

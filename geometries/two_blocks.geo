@@ -26,6 +26,11 @@ DefineConstant[
   plane = {0, Name "Parameters/plane"},         // 1: one layer thick (2-D); 0: 3-D
   refine = {1, Name "Parameters/refine"}        // multiplies every cell count
 ];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (h <= 0)
+  Error("two_blocks.geo: needs h > 0 (got h = %g)", h);
+EndIf
 // The blocks touch or overlap without sharing points: keep gmsh from merging the coincident
 // points of their sides (which would make a non-conforming face it cannot mesh).
 Geometry.AutoCoherence = 0;

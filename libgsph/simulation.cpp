@@ -68,7 +68,7 @@ void Simulation::addWall(Wall wall) {
 }
 
 std::vector<Vec3> Simulation::wallForces() const {
-    return integrator_ ? integrator_->walls().totalForces() : std::vector<Vec3>{};
+    return integrator_ ? state_.wallForce : std::vector<Vec3>{};
 }
 
 // The one place the integrator is built: a fresh start and a resumed run see the same
@@ -86,8 +86,11 @@ void Simulation::start() {
 
 void Simulation::resume(State state, const std::string& source) {
     if (integrator_) throw Error("resume() must come before the first step");
-    checkStateShape(state, State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs())),
-                    source);
+    // Checkpoints of format 1.0 have no wall forces: the first history row reads zero.
+    if (state.wallForce.empty()) state.wallForce.assign(walls_.size(), Vec3::Zero());
+    State expected = State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs()));
+    expected.wallForce.assign(walls_.size(), Vec3::Zero());
+    checkStateShape(state, expected, source);
     state_ = std::move(state);
     makeIntegrator();
     integrator_->resume(state_);

@@ -68,7 +68,8 @@ class Simulation {
     const VelocityVerlet& integrator() const { return *integrator_; }
     EnergyReport energy() const { return measureEnergy(ref_, state_, bodies_); }
     /// Per wall (in the order added), its force on the bodies at the last force evaluation
-    /// [N]; empty without walls or before start().
+    /// [N] (State::wallForce, so a resumed run reports what the straight run did); empty
+    /// without walls or before start().
     std::vector<Vec3> wallForces() const;
 
   private:

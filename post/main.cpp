@@ -13,7 +13,8 @@
 //                                    (the last snapshot) without --times,
 //   history.png, momentum.png        energies and momentum of history.csv.
 // Pictures need an X server: without DISPLAY gsph-post re-runs itself under `xvfb-run -a`
-// (package xvfb). Errors: one line naming the file, exit code 1.
+// (package xvfb). Errors: one line naming the file; exit code 1 (bad input, a bad option), 4
+// (an output file or folder could not be written: every file it would replace is kept).
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -21,6 +22,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -32,6 +34,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "crack_surface.hpp"
+#include "io/atomic_file.hpp"
 #include "io/snapshot.hpp"
 #include "pictures.hpp"
 #include "vtk_output.hpp"
@@ -162,6 +165,8 @@ double cpuSeconds() {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file-size limit (ulimit -f) is a failed write with its own message, not a kill.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"gsph-post: ParaView files and pictures of a GSPH run"};
     app.set_version_flag("--version", gsph::kVersion);
     std::string runDir, outDir, field = "von_mises";
@@ -188,7 +193,11 @@ int main(int argc, char** argv) {
     bool finalPicture = false;
     app.add_option("--pictures-of", picturesOf)->group("");
     app.add_flag("--final-picture", finalPicture)->group("");
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 1;  // --help, --version: 0; a bad option: 1
+    }
     try {
         const fs::path out = outDir.empty() ? fs::path(runDir) / "post" : fs::path(outDir);
         if (!picturesOf.empty()) {
@@ -196,7 +205,12 @@ int main(int argc, char** argv) {
             return 0;
         }
         const std::vector<fs::path> snapshots = snapshotFiles(runDir);
-        fs::create_directories(out);
+        std::error_code made;
+        fs::create_directories(out, made);
+        if (made)
+            throw gsph::WriteError(out.string() + ": cannot create the output folder (" +
+                                   made.message() + ")");
+        gsph::removeStaleTemporaries(out);
         const auto start = std::chrono::steady_clock::now();
         const double cpuStart = cpuSeconds();
 
@@ -287,7 +301,10 @@ int main(int argc, char** argv) {
                 picturesUnderXvfb(fs::read_symlink("/proc/self/exe").c_str(), child);
             }
         }
-    } catch (const gsph::Error& e) {
+    } catch (const gsph::WriteError& e) {
+        std::fprintf(stderr, "gsph-post: error: %s\n", e.what());
+        return 4;
+    } catch (const std::exception& e) {  // gsph::Error, a folder that cannot be made, ...
         std::fprintf(stderr, "gsph-post: error: %s\n", e.what());
         return 1;
     }

@@ -77,7 +77,8 @@ void savePng(vtkRenderWindow* window, const std::filesystem::path& png) {
         writer->SetFileName(temp.c_str());
         writer->SetInputConnection(grab->GetOutputPort());
         writer->Write();
-        if (!std::filesystem::exists(temp) || std::filesystem::file_size(temp) == 0)
+        if (writer->GetErrorCode() != 0 || !std::filesystem::exists(temp) ||
+            std::filesystem::file_size(temp) == 0)
             throw IoError(png.string() + ": could not write the picture");
     });
 }

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -197,20 +198,18 @@ void writeVtp(const std::filesystem::path& path, const CrackSurface& surface) {
 
 void writePvd(const std::filesystem::path& path,
               const std::vector<std::pair<double, std::string>>& entries) {
-    writeAtomically(path, [&](const std::filesystem::path& temp) {
-        std::ofstream out(temp);
-        out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  "
-               "<Collection>\n";
-        for (const auto& [time, file] : entries) {
-            char line[512];
-            std::snprintf(line, sizeof line,
-                          "    <DataSet timestep=\"%.9e\" part=\"0\" file=\"%s\"/>\n", time,
-                          file.c_str());
-            out << line;
-        }
-        out << "  </Collection>\n</VTKFile>\n";
-        if (!out.flush()) throw IoError(path.string() + ": write failed");
-    });
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  "
+           "<Collection>\n";
+    for (const auto& [time, file] : entries) {
+        char line[512];
+        std::snprintf(line, sizeof line,
+                      "    <DataSet timestep=\"%.9e\" part=\"0\" file=\"%s\"/>\n", time,
+                      file.c_str());
+        out << line;
+    }
+    out << "  </Collection>\n</VTKFile>\n";
+    writeTextAtomically(path, out.str());
 }
 
 }  // namespace gsph::post

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -21,6 +22,7 @@ namespace gsph::preproc {
 
 namespace {
 
+constexpr const char* kParameterEcho = "gsph-parameter ";
 constexpr int kHex8 = 5;   // gmsh element type: 8-node hexahedron
 constexpr int kQuad4 = 3;  // gmsh element type: 4-node quadrangle
 
@@ -87,6 +89,9 @@ class ParameterWrapper {
             out << name << " = " << text << ";\n";
         }
         out << "Include \"" << std::filesystem::absolute(input).string() << "\";\n";
+        // Read back after parsing: a plain assignment in the .geo would have replaced the value.
+        for (const auto& [name, value] : parameters)
+            out << "Printf(\"" << kParameterEcho << name << " = %.17g\", " << name << ");\n";
         out.close();
         if (!out) throw IoError(path_.string() + ": cannot write a temporary file");
         owned_ = true;
@@ -117,10 +122,8 @@ std::string gmshReason(const std::string& thrown) {
     return last.empty() ? std::string("unknown gmsh error") : oneLine(last);
 }
 
-/// The first error gmsh logged since the last call, or "" (and forgets the log).
-std::string firstError() {
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
+/// The first error of a gmsh log, or "".
+std::string firstError(const std::vector<std::string>& log) {
     const std::string prefix = "Error: ";
     for (const std::string& line : log) {
         if (line.rfind(prefix, 0) == 0) return oneLine(line.substr(prefix.size()));
@@ -128,14 +131,120 @@ std::string firstError() {
     return "";
 }
 
-void collectWarnings(std::vector<std::string>& warnings) {
-    std::vector<std::string> log;
-    gmsh::logger::get(log);
+void collectWarnings(const std::vector<std::string>& log, std::vector<std::string>& warnings) {
     const std::string prefix = "Warning: ";
     for (const std::string& line : log) {
         if (line.rfind(prefix, 0) == 0)
             warnings.push_back("gmsh: " + oneLine(line.substr(prefix.size())));
     }
+}
+
+/// Every --set NAME=VALUE must reach the .geo: its name must occur in the file, and the value
+/// the .geo ends up with (echoed by the wrapper) must be the one given; a plain assignment
+/// `NAME = …;` in the .geo (rather than a DefineConstant) replaces it and is refused here.
+void checkParameters(const std::filesystem::path& input,
+                     const std::vector<std::pair<std::string, double>>& parameters,
+                     const std::vector<std::string>& log) {
+    if (parameters.empty()) return;
+    std::ifstream in(input);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto isWordChar = [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+    };
+    std::vector<std::string> names;
+    gmsh::onelab::getNames(names, "Parameters/.*");
+    std::string known;
+    for (const std::string& n : names)
+        known += (known.empty() ? "" : ", ") + n.substr(n.find('/') + 1);
+    for (const auto& [name, value] : parameters) {
+        bool occurs = false;
+        for (std::size_t at = text.find(name); at != std::string::npos && !occurs;
+             at = text.find(name, at + 1))
+            occurs = (at == 0 || !isWordChar(text[at - 1])) &&
+                     (at + name.size() == text.size() || !isWordChar(text[at + name.size()]));
+        char given[64];
+        std::snprintf(given, sizeof given, "%.17g", value);
+        if (!occurs)
+            throw InputError(
+                input.string() + ": --set " + name + "=" + given + ": the file has no parameter '" +
+                name + "'" +
+                (known.empty() ? "" : " (its DefineConstant parameters: " + known + ")"));
+        const std::string echo = kParameterEcho + name + " = ";
+        for (const std::string& line : log) {
+            const std::size_t at = line.find(echo);
+            if (at == std::string::npos) continue;
+            const double seen = std::strtod(line.c_str() + at + echo.size(), nullptr);
+            if (seen != value) {
+                char got[64];
+                std::snprintf(got, sizeof got, "%.17g", seen);
+                throw InputError(input.string() + ": --set " + name + "=" + given +
+                                 " has no effect: the file assigns " + name + " = " + got +
+                                 " itself; only parameters declared with DefineConstant[...] "
+                                 "can be set from the command line");
+            }
+        }
+    }
+}
+
+/// Peak memory of meshing and converting one hexahedron (gmsh's mesh, HexMesh, the
+/// conversion), measured: 1.66e6 hexes of geometries/taylor_bar.geo (refine = 6) peak at
+/// 737 MB, 444 B each; rounded up.
+constexpr double kBytesPerHex = 500.0;
+
+/// Memory the system can give without swapping [bytes] (MemAvailable), 0 if unknown.
+double availableMemory() {
+    std::ifstream in("/proc/meminfo");
+    std::string key;
+    double kb = 0.0;
+    std::string unit;
+    while (in >> key >> kb >> unit)
+        if (key == "MemAvailable:") return kb * 1024.0;
+    return 0.0;
+}
+
+/// After the curve mesh: the hexahedra each volume will hold, from its edges' cell counts (a
+/// structured face of a×b cells has edges of a, b, a, b cells: the product of the four is
+/// (ab)²; a block of i×j×k cells has faces of ij, jk and ik cells, two each, whose product is
+/// (ijk)⁴), and the memory they need; refuses what this machine cannot hold and warns above
+/// half of it.
+void checkMeshSize(const std::string& source, std::vector<std::string>& warnings) {
+    gmsh::vectorpair volumes;
+    gmsh::model::getEntities(volumes, 3);
+    double hexes = 0.0;
+    for (const auto& volume : volumes) {
+        gmsh::vectorpair faces;
+        gmsh::model::getBoundary({volume}, faces, false, false, false);
+        if (faces.size() != 6) continue;  // not a six-faced block: no estimate
+        double logProduct = 0.0;          // Σ over faces of log(cells of the face)
+        for (const auto& face : faces) {
+            gmsh::vectorpair edges;
+            gmsh::model::getBoundary({{face.first, std::abs(face.second)}}, edges, false, false,
+                                     false);
+            double logFace = 0.0;
+            for (const auto& [dim, tag] : edges) {
+                std::vector<int> types;
+                std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+                gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, std::abs(tag));
+                std::size_t segments = 0;
+                for (const auto& e : elementTags) segments += e.size();
+                logFace += std::log(static_cast<double>(std::max<std::size_t>(segments, 1)));
+            }
+            logProduct += edges.size() == 4 ? 0.5 * logFace : 0.0;
+        }
+        hexes += std::exp(0.25 * logProduct);
+    }
+    const double need = hexes * kBytesPerHex, have = availableMemory();
+    if (have <= 0.0 || need <= 0.5 * have) return;
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "the mesh will have about %.3g hexahedra, which need about %.3g GB to mesh and "
+                  "convert; this machine has %.3g GB available",
+                  hexes, need / 1e9, have / 1e9);
+    if (need > have)
+        throw InputError(source + ": " + text +
+                         ": coarsen the mesh (its parameters, e.g. --set refine=...) or convert "
+                         "on a machine with more memory");
+    warnings.push_back(std::string(text) + " (more than half of it)");
 }
 
 /// Plural name of a gmsh element type, for messages. Common types are named here (asking gmsh
@@ -351,20 +460,29 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
     } catch (const std::string& e) {
         throw InputError(source + ": gmsh cannot read it: " + gmshReason(e));
     }
-    collectWarnings(warnings);
-    if (const std::string error = firstError(); !error.empty()) {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    checkParameters(input, options.parameters, log);
+    collectWarnings(log, warnings);
+    if (const std::string error = firstError(log); !error.empty()) {
         throw InputError(source + ": gmsh cannot read it: " + error);
     }
     gmsh::logger::stop();  // a fresh log for meshing
     gmsh::logger::start();
     if (ext == ".geo") {
         try {
+            // Curves first: their cell counts tell the volume mesh's size before gmsh
+            // allocates it (generate(3) then keeps them).
+            gmsh::model::mesh::generate(1);
+            checkMeshSize(source, warnings);
             gmsh::model::mesh::generate(3);
         } catch (const std::string& e) {
             throw MeshError(source + ": gmsh cannot mesh it: " + gmshReason(e));
         }
-        collectWarnings(warnings);
-        if (const std::string error = firstError(); !error.empty()) {
+        std::vector<std::string> meshLog;
+        gmsh::logger::get(meshLog);
+        collectWarnings(meshLog, warnings);
+        if (const std::string error = firstError(meshLog); !error.empty()) {
             throw MeshError(source + ": gmsh cannot mesh it: " + error);
         }
     }

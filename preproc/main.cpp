@@ -23,12 +23,15 @@
 //   1.5). --lattice H instead fills each body with the uniform Cartesian lattice of standard SPH
 //   (spacing ≈ H, sites inside the meshed region: uniform_lattice.hpp), for comparisons. The
 //   file format is in docs/formats.md. On error: one line on stderr naming the file and
-//   the fault, exit status 1, and no output file.
+//   the fault, exit status 1 (4 if the output could not be written: disk full, quota), and
+//   no output file (an existing one is kept). gmsh runs in a child process, so a crash inside
+//   gmsh is such an error too.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <future>
 #include <iostream>
 
@@ -36,8 +39,10 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "gmsh_input.hpp"
+#include "io/atomic_file.hpp"
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
+#include "mesh_process.hpp"
 #include "summary.hpp"
 
 namespace {
@@ -93,6 +98,8 @@ gsph::preproc::PriorityRule parsePriority(const std::string& text) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file-size limit (ulimit -f) is a failed write with its own message, not a kill.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"gsph-preproc: gmsh structured hex blocks -> GSPH particle file"};
     std::string input, output;
     std::vector<std::string> parameters;
@@ -117,10 +124,18 @@ int main(int argc, char** argv) {
                    "mesh), for comparison with the hex layout");
     app.add_flag("-q,--quiet", quiet, "print nothing but warnings and errors");
     app.set_version_flag("--version", gsph::kVersion);
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 1;  // --help, --version: 0; a bad option: 1
+    }
 
     try {
         const auto start = Clock::now();
+        std::error_code ec;
+        if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
+            throw gsph::InputError(output + ": is the input file itself; give another -o");
+        gsph::removeStaleTemporaries(std::filesystem::absolute(output).parent_path());
         // Hash the input for the provenance while gmsh reads it (a large .msh takes ~1 s).
         std::future<std::string> inputHash =
             std::async(std::launch::async, [&] { return gsph::sha256File(input); });
@@ -133,7 +148,7 @@ int main(int argc, char** argv) {
         for (const std::string& p : priorities)
             convertOptions.priorities.push_back(parsePriority(p));
         std::vector<std::string> warnings;
-        gsph::preproc::HexMesh mesh = gsph::preproc::readHexMesh(input, options, warnings);
+        gsph::preproc::HexMesh mesh = gsph::preproc::readHexMeshInChild(input, options, warnings);
         const auto read = Clock::now();
 
         gsph::preproc::Conversion conversion = gsph::preproc::convertHexMesh(mesh, convertOptions);
@@ -159,6 +174,6 @@ int main(int argc, char** argv) {
         std::string message = e.what();
         std::replace(message.begin(), message.end(), '\n', ' ');
         std::cerr << "gsph-preproc: error: " << message << "\n";
-        return 1;
+        return dynamic_cast<const gsph::WriteError*>(&e) ? 4 : 1;
     }
 }

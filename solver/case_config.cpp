@@ -311,12 +311,25 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
                 r.fail(n.as_table()->get("failed_bonds"),
                        "'failed_bonds' needs a johnson_cook material with damage; material '" +
                            b.material + "' has none");
+            for (const BodySpec& other : c.bodies)
+                if (other.group == b.group)
+                    r.fail(n.as_table()->get("group"), "[[body]] group '" + b.group +
+                                                           "' is given twice (also at line " +
+                                                           std::to_string(other.line) + ")");
             c.bodies.push_back(b);
         }
     if (c.bodies.empty()) throw InputError(file + ": no [[body]] defined");
 
     if (const toml::array* sets = arrayOfTables(file, root, "set"))
-        for (const toml::node& n : *sets) c.sets.push_back(readSet(file, *n.as_table()));
+        for (const toml::node& n : *sets) {
+            SetSpec s = readSet(file, *n.as_table());
+            for (const SetSpec& other : c.sets)
+                if (other.name == s.name)
+                    throw InputError(file + ":" + std::to_string(s.line) + ": [[set]] '" + s.name +
+                                     "' is given twice (also at line " +
+                                     std::to_string(other.line) + "): one condition per set");
+            c.sets.push_back(std::move(s));
+        }
     if (const toml::array* cracks = arrayOfTables(file, root, "precrack"))
         for (const toml::node& n : *cracks)
             c.precracks.push_back(readPrecrack(file, *n.as_table(), c.precracks.size()));

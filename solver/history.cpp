@@ -2,7 +2,6 @@
 #include "history.hpp"
 
 #include <cstdio>
-#include <fstream>
 #include <stdexcept>
 
 #include "core/error.hpp"
@@ -122,11 +121,7 @@ void History::restore(const std::string& text, const std::string& source) {
 }
 
 void History::flush() const {
-    writeAtomically(path_, [&](const std::filesystem::path& temp) {
-        std::ofstream out(temp);
-        out << text_;
-        if (!out.flush()) throw IoError(path_.string() + ": write failed (disk full?)");
-    });
+    writeTextAtomically(path_, text_);
 }
 
 }  // namespace gsph::solver

@@ -15,11 +15,15 @@
 // checkpoint.h5 at the case's checkpoint interval and on SIGINT/SIGTERM. Exit codes: 0 done,
 // 1 bad input or a file error (one line on stderr), 2 numerical breakdown (NaN, inverted
 // particle, collapsed time step: a final snapshot is written), 3 interrupted (a signal or
-// --stop-after-steps: checkpoint and snapshot written, the message says how to restart).
+// --stop-after-steps: checkpoint and snapshot written, the message says how to restart), 4 an
+// output file could not be written (disk full, quota, file-size limit: the message names the
+// file and the system's reason; every file it would have replaced, the last good checkpoint
+// included, is kept).
 #include <omp.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -37,6 +41,7 @@ namespace {
 constexpr int kExitError = 1;
 constexpr int kExitNumerical = 2;
 constexpr int kExitInterrupted = 3;
+constexpr int kExitWriteFailed = 4;
 
 // run.log, written atomically; a failure is reported, not thrown (true: written).
 bool flushLog(gsph::solver::RunLog& log) {
@@ -52,6 +57,8 @@ bool flushLog(gsph::solver::RunLog& log) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file-size limit (ulimit -f) is a failed write with its own message, not a kill.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"gsph-solve: total Lagrangian GSPH solver"};
     app.set_version_flag("--version", gsph::kVersion);
     std::string casePath, runDir, particles, restart;
@@ -65,12 +72,21 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1024));
     app.add_option("--restart", restart,
                    "continue the run from this checkpoint (same case and particle file)");
+    bool overwrite = false;
+    app.add_flag("--overwrite", overwrite,
+                 "start afresh in a run folder that holds an earlier run, removing its "
+                 "snapshots, checkpoint, history.csv and run.log (without it such a folder is "
+                 "refused)");
     app.add_option("--stop-after-steps", stopAfterSteps,
                    "stop as on SIGTERM once the step counter reaches N (for tests)")
         ->check(CLI::PositiveNumber);
     gsph::solver::MaterialPointOptions materialPoint;
     gsph::solver::addMaterialPointOptions(app, materialPoint);
-    CLI11_PARSE(app, argc, argv);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 1;  // --help, --version: 0; a bad option: 1
+    }
     if (threads > 0) omp_set_num_threads(threads);
     if (materialPoint.requested()) return gsph::solver::runMaterialPoint(materialPoint, runDir);
 
@@ -79,7 +95,9 @@ int main(int argc, char** argv) {
     options.log = &log;
     options.restart = restart;
     options.stopAfterSteps = stopAfterSteps;
+    options.overwrite = overwrite;
     options.stopSignal = gsph::solver::stopSignal;
+    options.steppingStarts = gsph::solver::deferStopSignals;
     gsph::solver::installStopHandlers();
     int status = 0;
     gsph::solver::RunSummary summary;
@@ -104,6 +122,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
         log.record(std::string("error: ") + e.what());
         status = kExitNumerical;
+    } catch (const gsph::WriteError& e) {
+        const std::filesystem::path kept = options.runDir / gsph::solver::kCheckpointName;
+        std::error_code ec;
+        const std::string restartHint =
+            std::filesystem::exists(kept, ec)
+                ? "; the last good checkpoint is kept: restart with --restart " + kept.string()
+                : "";
+        std::fprintf(stderr, "gsph-solve: error: %s%s\n", e.what(), restartHint.c_str());
+        log.record(std::string("error: ") + e.what());
+        status = kExitWriteFailed;
     } catch (const std::exception& e) {  // gsph::Error, and e.g. a folder that cannot be made
         std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
         log.record(std::string("error: ") + e.what());

@@ -157,11 +157,9 @@ int runMaterialPoint(const MaterialPointOptions& o, const std::string& output) {
             writeMaterialPointCsv(std::cout, rows);
             return 0;
         }
-        writeAtomically(output, [&](const std::filesystem::path& temp) {
-            std::ofstream out(temp);
-            writeMaterialPointCsv(out, rows);
-            if (!out.flush()) throw IoError(output + ": write failed (disk full?)");
-        });
+        std::ostringstream csv;
+        writeMaterialPointCsv(csv, rows);
+        writeTextAtomically(output, csv.str());
         const MaterialPointRecord& last = rows.back();
         std::printf(
             "gsph-solve: material point '%s' along %s: %zu rows -> %s (final strain %.4g, "

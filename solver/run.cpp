@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "history.hpp"
+#include "io/atomic_file.hpp"
 #include "io/checkpoint.hpp"
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
@@ -48,7 +49,15 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         const BodyInfo& info = file.bodies[b];
         const BodySpec* spec = nullptr;
         for (const BodySpec& s : c.bodies)
-            if (s.group == info.name || s.group == std::to_string(b)) spec = &s;
+            if (s.group == info.name || s.group == std::to_string(b)) {
+                if (spec)
+                    throw InputError(c.caseFile.string() + ":" + std::to_string(s.line) +
+                                     ": [[body]] group '" + s.group + "' names body " +
+                                     std::to_string(b) + " ('" + info.name +
+                                     "'), which the entry at line " + std::to_string(spec->line) +
+                                     " ('" + spec->group + "') already names");
+                spec = &s;
+            }
         if (!spec) {
             throw InputError(c.caseFile.string() + ": body " + std::to_string(b) + " ('" +
                              info.name + "') of " + c.particles.string() +
@@ -235,12 +244,16 @@ class RunOutputs {
     void afterStep(const State& s) {
         progress_.update(s.time, s.step);
         if (c_.checkpointInterval <= 0.0 || s.time >= c_.endTime - reachedTolerance()) return;
-        const auto due = [&] {
-            return s.time >= static_cast<double>(schedule.nextCheckpoint) * c_.checkpointInterval -
-                                 reachedTolerance();
+        const auto due = [&](long m) {
+            return s.time >= static_cast<double>(m) * c_.checkpointInterval - reachedTolerance();
         };
-        if (!due()) return;
-        while (due()) ++schedule.nextCheckpoint;
+        if (!due(schedule.nextCheckpoint)) return;
+        // The first multiple past this time: started within one of it (counting up from the
+        // last one would spin for long on a tiny interval).
+        long next = std::max(schedule.nextCheckpoint,
+                             static_cast<long>(std::floor(s.time / c_.checkpointInterval)));
+        while (due(next)) ++next;
+        schedule.nextCheckpoint = next;
         checkpoint(s);
     }
     /// Tolerance of "this time is reached", as Simulation::advanceTo lands on its end time.
@@ -282,6 +295,25 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
     return sim;
 }
 
+// Snapshots and checkpoints are written at intervals of simulated time; one shorter than the
+// first step would write a file after every step (or spin on its schedule).
+void checkIntervals(const CaseConfig& c, double dt0) {
+    const auto refuse = [&](const char* key, double value, const char* remedy) {
+        char line[400];
+        std::snprintf(line, sizeof line,
+                      ": [run] %s = %.3e s is below the first time step (Δt0 = %.3e s): every "
+                      "step would write a file; %s",
+                      key, value, dt0, remedy);
+        throw InputError(c.caseFile.string() + line);
+    };
+    if (c.outputInterval < dt0)
+        refuse("output_interval", c.outputInterval,
+               "give output_interval ≥ Δt0 (or leave it out: end_time / 10)");
+    if (c.checkpointInterval > 0.0 && c.checkpointInterval < dt0)
+        refuse("checkpoint_interval", c.checkpointInterval,
+               "give checkpoint_interval ≥ Δt0 (0: checkpoints on a signal only)");
+}
+
 std::string sizeLine(const Reference& ref) {
     double totalMass = 0, meshMass = 0;
     for (Index a = 0; a < ref.size(); ++a) {
@@ -315,6 +347,20 @@ void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
 
 }  // namespace
 
+std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& runDir) {
+    std::vector<std::filesystem::path> out;
+    std::error_code ec;
+    for (std::filesystem::directory_iterator it(runDir, ec), end; !ec && it != end;
+         it.increment(ec)) {
+        const std::string name = it->path().filename().string();
+        const bool snapshot = name.rfind("snapshot_", 0) == 0 && it->path().extension() == ".h5";
+        if (snapshot || name == kCheckpointName || name == "history.csv" || name == "run.log")
+            out.push_back(it->path());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
 RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     ParticleFile file;
     try {
@@ -330,17 +376,33 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         checkpoint = readCheckpoint(options.restart);
         checkInputs(checkpoint->run.inputs, inputs, options.restart);
     }
+    // A fresh run never mixes its files with an earlier run's (gsph-post would read both).
+    if (!checkpoint) {
+        const std::vector<std::filesystem::path> earlier = earlierRunFiles(options.runDir);
+        if (!earlier.empty() && !options.overwrite)
+            throw InputError(options.runDir.string() + ": holds an earlier run (" +
+                             std::to_string(earlier.size()) + " files, e.g. " +
+                             earlier.front().filename().string() +
+                             "); give another -o, continue it with --restart, or pass "
+                             "--overwrite to replace it");
+        for (const std::filesystem::path& p : earlier) std::filesystem::remove(p);
+    }
     BodySetup bodies = matchBodies(c, file);
     const std::unique_ptr<Simulation> simulation = buildSimulation(c, file, bodies);
     Simulation& sim = *simulation;
     const Reference& ref = sim.reference();
     std::filesystem::create_directories(options.runDir);
+    if (const int stale = removeStaleTemporaries(options.runDir))
+        options.log->add("removed " + std::to_string(stale) +
+                         " temporary file(s) that an earlier, killed process left in " +
+                         options.runDir.string());
     RunOutputs out(c, options, ref, std::move(inputs));
     options.log->add(sizeLine(ref));
     if (checkpoint) {
         out.restore(checkpoint->run);
         sim.resume(std::move(checkpoint->state), options.restart.string());
         checkpoint.reset();
+        checkIntervals(c, sim.state().initialDt);
         options.log->add("restart from " + options.restart.string() +
                          format(": t = %.6e s, step %ld", sim.state().time, sim.state().step));
     } else {
@@ -350,6 +412,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                 bodies.velocity[static_cast<std::size_t>(ref.body[static_cast<std::size_t>(a)])];
         sim.setVelocities(initial);
         sim.start();
+        checkIntervals(c, sim.state().initialDt);
         const EnergyReport initialEnergy = sim.energy();
         // Bodies placed inside a contact distance (of a wall or of each other) start on
         // compressed penalty springs that release this energy at once: say so.
@@ -382,6 +445,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         return false;
     };
     const long firstStep = sim.state().step;
+    if (options.steppingStarts) options.steppingStarts();
     out.progress().start(sim.state().time, firstStep);
     const auto t0 = Clock::now();
     try {

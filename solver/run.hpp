@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "case_config.hpp"
 #include "run_log.hpp"
@@ -28,6 +29,12 @@ struct RunOptions {
     std::filesystem::path restart;    ///< checkpoint to continue from (empty: start at t = 0)
     long stopAfterSteps = 0;          ///< > 0: stop as on a signal once the step counter reaches it
     std::function<int()> stopSignal;  ///< the signal received, or 0 (checked after every step)
+    /// Called once the first step is about to be taken: from then on a signal stops the run
+    /// after the current step with a checkpoint (before, there is nothing to save).
+    std::function<void()> steppingStarts;
+    /// A fresh run into a folder that holds an earlier run's files (snapshots, checkpoint,
+    /// history): false refuses with InputError, true removes them first.
+    bool overwrite = false;
 };
 
 struct RunSummary {
@@ -44,6 +51,10 @@ struct RunSummary {
 
 /// Name of the rolling checkpoint in a run folder.
 inline constexpr const char* kCheckpointName = "checkpoint.h5";
+
+/// The files of an earlier run in a folder (snapshot_*.h5, checkpoint.h5, history.csv,
+/// run.log), sorted; empty if the folder does not exist.
+std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& runDir);
 
 RunSummary runCase(const CaseConfig& config, const RunOptions& options);
 

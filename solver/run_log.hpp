@@ -48,11 +48,9 @@ class RunLog {
     /// Rewrites run.log. Throws IoError on failure.
     void flush() {
         if (path_.empty()) return;
-        writeAtomically(path_, [&](const std::filesystem::path& temp) {
-            std::ofstream out(temp);
-            for (const std::string& line : lines_) out << line << "\n";
-            if (!out.flush()) throw IoError(path_.string() + ": write failed (disk full?)");
-        });
+        std::string text;
+        for (const std::string& line : lines_) text.append(line).push_back('\n');
+        writeTextAtomically(path_, text);
         written_ = true;
     }
 

@@ -7,9 +7,10 @@ namespace gsph::solver {
 namespace {
 
 volatile std::sig_atomic_t received = 0;
+volatile std::sig_atomic_t deferred = 0;
 
 void onStopSignal(int signal) {
-    if (received != 0) {
+    if (received != 0 || deferred == 0) {
         std::signal(signal, SIG_DFL);
         std::raise(signal);
         return;
@@ -22,6 +23,10 @@ void onStopSignal(int signal) {
 void installStopHandlers() {
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
+}
+
+void deferStopSignals() {
+    deferred = 1;
 }
 
 int stopSignal() {

@@ -125,16 +125,15 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
     return result;
 }
 
-std::vector<Vec3> RigidWalls::totalForces() const {
+void RigidWalls::totalForces(std::vector<Vec3>& totals) const {
     const std::size_t walls = walls_.size();
-    std::vector<Vec3> totals(walls, Vec3::Zero()), partial;
-    if (walls == 0) return totals;
+    totals.assign(walls, Vec3::Zero());
+    if (walls == 0 || perWall_.empty()) return;
     for (std::size_t iw = 0; iw < walls; ++iw)
         totals[iw] = deterministicSum(
             ref_->size(), Vec3(Vec3::Zero()),
             [&](Index a) -> Vec3 { return perWall_[static_cast<std::size_t>(a) * walls + iw]; },
-            partial);
-    return totals;
+            partialForce_);
 }
 
 }  // namespace gsph

@@ -85,8 +85,8 @@ class RigidWalls {
 
     /// Per wall, the total force (normal and friction) it exerted on the bodies at the last
     /// addForces [N] (zero before the first); the reaction on the wall is its opposite. Summed
-    /// on demand (history rows), in a fixed order, not in every step.
-    std::vector<Vec3> totalForces() const;
+    /// in a fixed order (bit-identical for any thread count); `totals` is resized to the walls.
+    void totalForces(std::vector<Vec3>& totals) const;
 
   private:
     const Reference* ref_ = nullptr;
@@ -96,6 +96,7 @@ class RigidWalls {
     std::vector<Mat3> S_;         ///< the ellipsoids' S_a (kept only when a cylinder needs them)
     std::vector<Vec3> perWall_;   ///< force of wall w on a: perWall_[a · walls + w]
     std::vector<double> energy_, pushPower_, partial_;  ///< per particle scratch
+    mutable std::vector<Vec3> partialForce_;            ///< scratch of totalForces
 };
 
 }  // namespace gsph

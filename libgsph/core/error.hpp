@@ -45,4 +45,11 @@ class IoError : public Error {
     using Error::Error;
 };
 
+/// An output file could not be written whole (disk full, quota, file-size limit, permissions,
+/// a failing sync or read-back): the file it was to replace is untouched (io/atomic_file.hpp).
+class WriteError : public IoError {
+  public:
+    using IoError::IoError;
+};
+
 }  // namespace gsph

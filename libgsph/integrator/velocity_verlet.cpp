@@ -317,6 +317,7 @@ void VelocityVerlet::computeAccelerations(State& state) {
                       work_.parts, bonds_.view(state), bonds_.G().data());
     }
     addContactAndLoads(state);
+    if (walls_.active()) walls_.totalForces(state.wallForce);
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.acceleration[ia] = work_.force[ia] / ref_.mass[ia];

@@ -143,17 +143,24 @@ RunRecord readRunRecord(const h5::File& f) {
 
 void writeCheckpoint(const std::filesystem::path& path, const State& state, const RunRecord& run,
                      const Provenance& provenance) {
-    writeAtomically(path, [&](const std::filesystem::path& temp) {
-        h5::File f(temp, h5::File::Mode::Create);
-        writeFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor, kCheckpointFormatMinor);
-        writeProvenance(f, provenance);
-        state.forEachArray(
-            [&](const char* name, const auto& array) { writeArray(f, kStateGroup + name, array); });
-        state.forEachScalar([&](const char* name, const auto& value) {
-            writeScalar(f, kScalarGroup + name, value);
-        });
-        writeRunRecord(f, run);
-    });
+    writeAtomically(
+        path,
+        [&](const std::filesystem::path& temp) {
+            h5::File f(temp, h5::File::Mode::Create);
+            writeFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor,
+                               kCheckpointFormatMinor);
+            writeProvenance(f, provenance);
+            state.forEachArray([&](const char* name, const auto& array) {
+                writeArray(f, kStateGroup + name, array);
+            });
+            state.forEachScalar([&](const char* name, const auto& value) {
+                writeScalar(f, kScalarGroup + name, value);
+            });
+            writeRunRecord(f, run);
+            f.close(path);
+        },
+        // The previous checkpoint is replaced only by one that reads back whole.
+        [](const std::filesystem::path& temp) { readCheckpoint(temp); });
 }
 
 Checkpoint readCheckpoint(const std::filesystem::path& path) {
@@ -162,8 +169,11 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     checkFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor);
     Checkpoint c;
     c.provenance = readProvenance(f);
-    c.state.forEachArray(
-        [&](const char* name, auto& array) { readArray(f, kStateGroup + name, array); });
+    c.state.forEachArray([&](const char* name, auto& array) {
+        // 1.0 files have no wall forces: Simulation::resume takes them as zero.
+        if (std::string(name) == "wall_force" && !f.exists(kStateGroup + name)) return;
+        readArray(f, kStateGroup + name, array);
+    });
     c.state.forEachScalar(
         [&](const char* name, auto& value) { readScalar(f, kScalarGroup + name, value); });
     c.run = readRunRecord(f);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Checkpoint files (DESIGN §1): the whole State of a run, so that a restart continues it bit
 // for bit, plus what the run's driver needs to resume its own schedule. HDF5, format
-// "gsph-checkpoint" 1.0 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
+// "gsph-checkpoint" 1.1 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /state/NAME            every array of State::forEachArray (Vec3: N×3, Mat3: N×9 row-major,
 //                          double: N, uint8: per pair), stored exactly (no conversion)
@@ -29,7 +29,7 @@ namespace gsph {
 
 inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
 inline constexpr int kCheckpointFormatMajor = 1;
-inline constexpr int kCheckpointFormatMinor = 0;
+inline constexpr int kCheckpointFormatMinor = 1;  ///< 1.1: /state/wall_force
 
 /// A file the run was built from: a restart refuses to continue if its bytes changed.
 struct CheckpointInput {

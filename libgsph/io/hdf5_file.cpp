@@ -4,6 +4,7 @@
 #include <type_traits>
 
 #include "core/error.hpp"
+#include "io/atomic_file.hpp"
 
 namespace gsph::h5 {
 
@@ -123,9 +124,13 @@ QuietErrors::~QuietErrors() {
     H5Eset_auto2(H5E_DEFAULT, oldFunc_, oldData_);
 }
 
-File::File(const std::filesystem::path& path, Mode mode) : name_(path.string()) {
+File::File(const std::filesystem::path& path, Mode mode) : name_(path.string()), mode_(mode) {
     if (mode == Mode::Create) {
-        file_ = Id(H5Fcreate(name_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+        Id fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+        // In memory, grown in steps of 4 MiB, never backed by the file (close() writes it).
+        if (!fapl.valid() || H5Pset_fapl_core(fapl.get(), std::size_t{4} << 20, 0) < 0)
+            throw IoError(name_ + ": cannot set up the file in memory (" + hdf5Reason() + ")");
+        file_ = Id(H5Fcreate(name_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get()), H5Fclose);
         if (!file_.valid())
             throw IoError(name_ + ": cannot create the file (" + hdf5Reason() + ")");
         return;
@@ -138,6 +143,24 @@ File::File(const std::filesystem::path& path, Mode mode) : name_(path.string()) 
     }
     file_ = Id(H5Fopen(name_.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
     if (!file_.valid()) throw IoError(name_ + ": cannot open the file (" + hdf5Reason() + ")");
+}
+
+void File::close(const std::filesystem::path& reportAs) {
+    if (!file_.valid()) throw IoError(name_ + ": closed twice");
+    if (mode_ == Mode::ReadOnly) {
+        const hid_t id = file_.release();  // released before the call: never closed twice
+        if (H5Fclose(id) < 0) throw IoError(name_ + ": cannot close (" + hdf5Reason() + ")");
+        return;
+    }
+    if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("/", "cannot flush");
+    const ssize_t size = H5Fget_file_image(file_.get(), nullptr, 0);
+    if (size < 0) fail("/", "cannot size the image of");
+    std::string image(static_cast<std::size_t>(size), '\0');
+    if (H5Fget_file_image(file_.get(), image.data(), image.size()) != size)
+        fail("/", "cannot copy the image of");
+    const hid_t id = file_.release();
+    if (H5Fclose(id) < 0) throw IoError(name_ + ": cannot close (" + hdf5Reason() + ")");
+    writeBytes(name_, image, reportAs);
 }
 
 void File::fail(const std::string& object, const std::string& what) const {

@@ -35,6 +35,12 @@ class Id {
     hid_t get() const { return id_; }
     bool valid() const { return id_ >= 0; }
     void reset();
+    /// Gives up ownership: the caller closes the identifier.
+    hid_t release() {
+        const hid_t id = id_;
+        id_ = -1;
+        return id;
+    }
 
   private:
     hid_t id_ = -1;
@@ -61,8 +67,17 @@ class File {
   public:
     enum class Mode { Create, ReadOnly };
 
-    /// Create truncates an existing file. Throws IoError naming the file on failure.
+    /// Create builds the file in memory (HDF5's core driver, no backing store): nothing touches
+    /// the disk until close() writes the whole image with checked writes, so a full disk is an
+    /// IoError there and never a half-written file inside HDF5. A created file that is not
+    /// closed (an exception) leaves nothing on disk. Throws IoError naming the file on failure.
     File(const std::filesystem::path& path, Mode mode);
+
+    /// Create mode: writes the file's image to its path (created or truncated; every write
+    /// checked) and closes it. ReadOnly: closes it. Throws IoError naming the file on failure.
+    /// The destructor of a file not closed discards it. Errors name `reportAs` if given (the
+    /// target of an atomic write rather than its temporary name).
+    void close(const std::filesystem::path& reportAs = {});
 
     const std::string& name() const { return name_; }
 
@@ -96,6 +111,7 @@ class File {
 
     QuietErrors quiet_;
     std::string name_;
+    Mode mode_;
     Id file_;
 };
 

@@ -215,6 +215,7 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f)
             h5.write("/sets/" + name, members.data(), {members.size()});
         }
         if (!f.transient.empty()) writeOverset(h5, f);
+        h5.close(path);
     });
 }
 

@@ -123,6 +123,7 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         const std::vector<std::array<Index, 2>> broken = brokenBonds(ref.pairs, state.bondIntact);
         f.write("/bonds/broken", broken.empty() ? nullptr : broken.data()->data(),
                 {broken.size(), 2});
+        f.close(path);
     });
 }
 

@@ -124,6 +124,19 @@ class CellList {
                     onLattice[s] = false;
             }
         }
+        // The grid never has more cells than a few per point (64-bit products): a lattice
+        // extent that disagrees with the particle count (a damaged or crafted file) falls back
+        // to support-sized cells, and those are coarsened until the bound holds.
+        std::vector<std::int64_t> pointsIn(spaces.size(), 0);
+        for (const SearchPoint& p : points) ++pointsIn[static_cast<std::size_t>(p.space)];
+        const auto cellBound = [&](std::size_t s) { return 4 * pointsIn[s] + 64; };
+        for (std::size_t s = 0; s < spaces.size(); ++s) {
+            std::int64_t product = 1;
+            for (int d = 0; d < 3; ++d)
+                product *= std::max<std::int64_t>(
+                    1, spaces[s].lattice->cells[static_cast<std::size_t>(d)]);
+            if (product > cellBound(s)) onLattice[s] = false;
+        }
         for (std::size_t s = 0; s < spaces.size(); ++s) {
             Grid& g = grids_[s];
             g.search = &spaces[s];
@@ -132,9 +145,15 @@ class CellList {
             for (int d = 0; d < 3; ++d) {
                 g.lo[d] = 0.0;
                 const double extent = std::max(spaces[s].period[d], R);
-                g.n[d] = onLattice[s] ? spaces[s].lattice->cells[static_cast<std::size_t>(d)]
-                                      : std::max(1, static_cast<int>(std::floor(extent / R)));
+                g.n[d] = onLattice[s]
+                             ? spaces[s].lattice->cells[static_cast<std::size_t>(d)]
+                             : static_cast<int>(std::clamp(std::floor(extent / R), 1.0, 1e9));
                 g.cellSize[d] = onLattice[s] ? spaces[s].lattice->dtheta : extent / g.n[d];
+            }
+            while (static_cast<std::int64_t>(g.n[0]) * g.n[1] * g.n[2] > cellBound(s)) {
+                const int d = static_cast<int>(std::max_element(g.n, g.n + 3) - g.n);
+                g.n[d] = std::max(1, g.n[d] / 2);
+                g.cellSize[d] = std::max(spaces[s].period[d], R) / g.n[d];
             }
             const int m = onLattice[s] ? spaces[s].stencilHalfWidth : 1;
             for (int i = -m; i <= m; ++i)
@@ -209,7 +228,9 @@ class CellList {
         bool mayAlias = false;
         std::vector<Index> start, members;
 
-        Index cells() const { return static_cast<Index>(n[0]) * n[1] * n[2]; }
+        Index cells() const {
+            return static_cast<Index>(static_cast<std::int64_t>(n[0]) * n[1] * n[2]);
+        }
         Index cellIndex(const Vec3& t) const {
             int c[3];
             for (int d = 0; d < 3; ++d) {

@@ -55,6 +55,9 @@ struct State {
     /// Per pair of Reference::pairs (CSR order): 1 while the bond holds, 0 once broken for good
     /// (DESIGN §5). Both directions (a,b) and (b,a) carry the same value.
     std::vector<std::uint8_t> bondIntact;
+    /// Per rigid wall (in the order added), its total force on the bodies at the last force
+    /// evaluation [N] (history rows; empty without walls).
+    std::vector<Vec3> wallForce;
     EnergyLedger ledger;
 
     /// Calls visit(name, array) for every array of the state (per particle, or per pair for
@@ -113,6 +116,7 @@ struct State {
         visit("damage", s.damage);
         visit("internal_energy", s.internalEnergy);
         visit("bond_intact", s.bondIntact);
+        visit("wall_force", s.wallForce);
     }
 
   public:

@@ -100,6 +100,16 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"precrack_parallel_edges.toml", "'edge1' and 'edge2' in [[precrack]] 'notch' are parallel",
          19},
         {"precrack_missing_corner.toml", "missing key 'corner' in [[precrack]]", 15},
+        {"duplicate_body.toml", "[[body]] group 'bar' is given twice (also at line 11)", 16},
+        {"body_named_twice.toml",
+         "[[body]] group '0' names body 0 ('bar'), which the entry at line 11 ('bar') already "
+         "names",
+         15},
+        {"duplicate_set.toml", "[[set]] 'clamp' is given twice (also at line 15)", 19},
+        {"checkpoint_interval_below_dt.toml",
+         ": [run] checkpoint_interval = 1.000e-300 s is below the first time step", 0},
+        {"output_interval_below_dt.toml",
+         ": [run] output_interval = 1.000e-12 s is below the first time step", 0},
     };
     std::size_t fixtures = 0;
     for (const auto& e : fs::directory_iterator(kSource / "tests/data/bad_cases"))

@@ -307,12 +307,14 @@ TEST(ParticleFile, ReadErrorsNameTheFile) {
     {
         h5::File other(dir / "other.h5", h5::File::Mode::Create);
         other.setAttribute("/", "format", std::string("something-else"));
+        other.close();
     }
     EXPECT_THROW(readParticleFile(dir / "other.h5"), IoError);
     {
         h5::File future(dir / "future.h5", h5::File::Mode::Create);
         future.setAttribute("/", "format", std::string(kParticleFormat));
         future.setAttribute("/", "format_version", std::string("2.0"));
+        future.close();
     }
     try {
         readParticleFile(dir / "future.h5");
