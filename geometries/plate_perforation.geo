@@ -1,4 +1,4 @@
-// Ductile plate perforation (issue #9): a circular Weldox 460E plate, clamped at its rim, struck
+// Ductile plate perforation: a circular Weldox 460E plate, clamped at its rim, struck
 // at its centre by a blunt hardened-steel cylinder (Børvik et al. 1999: 12 mm plate, 20 mm ×
 // 80 mm projectile of 197 g).
 //

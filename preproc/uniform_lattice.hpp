@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The uniform Cartesian layout of standard SPH, from the same gmsh geometry (`gsph-preproc
-// --lattice H`): what GSPH is compared against (issue #8), without a second mesh to draw.
+// --lattice H`): what GSPH is compared against, without a second mesh to draw.
 //
 // Per body: the bounding box of its hexes is divided into n_d = max(1, round(extent_d / H))
 // cells along each axis (spacing h_d = extent_d / n_d, within ½H/extent of H, so a box-shaped

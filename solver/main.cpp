@@ -2,11 +2,13 @@
 // gsph-solve: runs a case.
 //
 // Usage:   gsph-solve CASE.toml [-o RUNDIR] [--particles FILE] [--restart CHECKPOINT.h5]
-//                     [--threads N] [--stop-after-steps N]
+//                     [--threads N] [--overwrite] [--end-time T] [--output-interval DT]
+//                     [--checkpoint-interval DT] [--stop-after-steps N]
 //          gsph-solve --material-point MATERIAL.toml --path PATH [-o OUT.csv] [--temperature T]
 // Sample:  gsph-preproc geometries/graded_bar.geo -o run/bar/particles.h5
 //          gsph-solve cases/graded_bar/case.toml -o run/bar
 //          gsph-solve cases/graded_bar/case.toml --restart run/bar/checkpoint.h5
+//          gsph-solve cases/graded_bar/case.toml --restart run/bar/checkpoint.h5 --end-time 6e-5
 //          gsph-solve --material-point materials/ofhc_copper.toml
 //                     --path materials/paths/uniaxial_stress_1e3.toml -o copper.csv
 // Description: reads the case file (docs/case-format.md) and the particle file it names, runs
@@ -72,6 +74,19 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1024));
     app.add_option("--restart", restart,
                    "continue the run from this checkpoint (same case and particle file)");
+    double endTime = 0.0, outputInterval = 0.0, checkpointInterval = -1.0;
+    app.add_option("--end-time", endTime,
+                   "T [s]: instead of the case's end_time; with --restart, continues a finished "
+                   "(or stopped) run to T")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--output-interval", outputInterval,
+                   "[s] between snapshots, instead of the case's output_interval (also on a "
+                   "restart: the schedule continues from the checkpoint's time)")
+        ->check(CLI::PositiveNumber);
+    app.add_option("--checkpoint-interval", checkpointInterval,
+                   "[s] between checkpoints, instead of the case's (0: only on a signal and at "
+                   "the end)")
+        ->check(CLI::NonNegativeNumber);
     bool overwrite = false;
     app.add_flag("--overwrite", overwrite,
                  "start afresh in a run folder that holds an earlier run, removing its "
@@ -104,6 +119,9 @@ int main(int argc, char** argv) {
     try {
         gsph::solver::CaseConfig config = gsph::solver::readCaseFile(casePath);
         if (!particles.empty()) config.particles = particles;
+        if (endTime > 0.0) config.endTime = endTime;
+        if (outputInterval > 0.0) config.outputInterval = outputInterval;
+        if (checkpointInterval >= 0.0) config.checkpointInterval = checkpointInterval;
         // Default run folder: the checkpoint's folder on a restart; else run/<name of the
         // case's folder>, or run/<case file stem>.
         const std::string caseName = config.caseFile.parent_path().filename().string();
@@ -112,7 +130,8 @@ int main(int argc, char** argv) {
                          : caseName.empty() || caseName == "."
                              ? std::filesystem::path("run") / config.caseFile.stem()
                              : std::filesystem::path("run") / caseName;
-        options.progress = isatty(STDOUT_FILENO) != 0;
+        options.progress = isatty(STDOUT_FILENO) != 0 ? gsph::solver::ProgressBar::Mode::Bar
+                                                      : gsph::solver::ProgressBar::Mode::Lines;
         log.open(options.runDir / "run.log", !restart.empty());
         log.add("gsph-solve " + std::string(gsph::kVersion) + ": " + casePath + " -> " +
                 options.runDir.string() + " (" + std::to_string(omp_get_max_threads()) +

@@ -161,7 +161,15 @@ void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& e
 
 std::filesystem::path materialLibraryFolder() {
     if (const char* env = std::getenv("GSPH_MATERIALS_DIR"); env && *env) return env;
-    return GSPH_MATERIALS_DIR;
+    // Installed (cmake --install): PREFIX/bin/gsph-solve beside PREFIX/share/gsph/materials.
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const std::filesystem::path installed =
+            exe.parent_path().parent_path() / "share" / "gsph" / "materials";
+        if (std::filesystem::is_directory(installed, ec)) return installed;
+    }
+    return GSPH_MATERIALS_DIR;  // the source tree's library (a build tree)
 }
 
 std::filesystem::path resolveMaterialFile(const std::filesystem::path& caseFolder,

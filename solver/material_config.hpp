@@ -5,9 +5,10 @@
 // holding the built, validated model; every fault is an InputError "FILE:LINE: what".
 //
 // Where `file` resolves (first that exists): relative to the case file's folder; then in the
-// material library folder — $GSPH_MATERIALS_DIR if set, else the repository's materials/ —
-// where a leading "materials/" may be left out or kept (`ofhc_copper.toml` and
-// `materials/ofhc_copper.toml` name the same library file). An absolute path is taken as is.
+// material library folder — $GSPH_MATERIALS_DIR if set, else PREFIX/share/gsph/materials of an
+// installed gsph-solve, else the repository's materials/ — where a leading "materials/" may be left
+// out or kept (`ofhc_copper.toml` and `materials/ofhc_copper.toml` name the same library file). An
+// absolute path is taken as is.
 #pragma once
 
 #include <toml++/toml.h>
@@ -38,7 +39,8 @@ MaterialSpec readMaterialTable(const std::filesystem::path& caseFile, const toml
 /// A material file; its name is the file's stem.
 MaterialSpec readMaterialFile(const std::filesystem::path& path);
 
-/// The material library folder: $GSPH_MATERIALS_DIR, else the repository's materials/.
+/// The material library folder: $GSPH_MATERIALS_DIR, else PREFIX/share/gsph/materials beside an
+/// installed gsph-solve (PREFIX/bin), else the repository's materials/.
 std::filesystem::path materialLibraryFolder();
 
 /// Resolves `file` as described above; empty if nothing exists (`tried` lists the candidates).

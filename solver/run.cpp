@@ -146,6 +146,13 @@ long counter(const RunRecord& run, const std::string& name, const std::filesyste
     return static_cast<long>(it->second);
 }
 
+// A double as text that reads back to the same bits.
+std::string exactText(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.17g", value);
+    return text;
+}
+
 std::string format(const char* fmt, double a, long b) {
     char line[160];
     std::snprintf(line, sizeof line, fmt, a, b);
@@ -217,6 +224,9 @@ class RunOutputs {
         r.counters["next_output"] = schedule.nextOutput;
         r.counters["next_snapshot"] = schedule.nextSnapshot;
         r.counters["next_checkpoint"] = schedule.nextCheckpoint;
+        // The intervals the counters count in: a restart with other intervals re-counts them.
+        r.texts["output_interval"] = exactText(c_.outputInterval);
+        r.texts["checkpoint_interval"] = exactText(c_.checkpointInterval);
         r.texts["history"] = history_.text();
         writeCheckpoint(checkpointPath(), s, r, provenance_);
         const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -229,7 +239,7 @@ class RunOutputs {
         log_.flush();
     }
     /// The schedule and history a checkpoint stored.
-    void restore(const RunRecord& run) {
+    void restore(const RunRecord& run, double time) {
         const std::filesystem::path& file = options_.restart;
         schedule.nextOutput = counter(run, "next_output", file);
         schedule.nextSnapshot = counter(run, "next_snapshot", file);
@@ -238,6 +248,24 @@ class RunOutputs {
         if (text == run.texts.end())
             throw InputError(file.string() + ": checkpoint lacks the history");
         history_.restore(text->second, file.string());
+        // Intervals changed on the command line (--output-interval, --checkpoint-interval):
+        // the schedule goes on from the checkpoint's time in the new intervals.
+        const auto firstPast = [&](double interval) {
+            long k = std::max(1L, static_cast<long>(std::floor(time / interval)));
+            while (static_cast<double>(k) * interval <= time + reachedTolerance()) ++k;
+            return k;
+        };
+        const auto changed = [&](const char* key, double now) {
+            const auto it = run.texts.find(key);
+            return it != run.texts.end() && it->second != exactText(now);
+        };
+        if (changed("output_interval", c_.outputInterval))
+            schedule.nextOutput = firstPast(c_.outputInterval);
+        if (changed("checkpoint_interval", c_.checkpointInterval) && c_.checkpointInterval > 0.0)
+            schedule.nextCheckpoint = firstPast(c_.checkpointInterval);
+        if (time >= c_.endTime - reachedTolerance())
+            throw InputError(file.string() + format(": the run is at t = %.6e s", time, 0) +
+                             ", already at its end time; give a later --end-time to continue it");
     }
     /// After every step: the progress bar, and a checkpoint at the first step at or past each
     /// m·checkpoint_interval (none at the end time: the run is done then).
@@ -398,8 +426,10 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                          options.runDir.string());
     RunOutputs out(c, options, ref, std::move(inputs));
     options.log->add(sizeLine(ref));
+    // From here on the run writes its folder: a signal stops it after a step, with a checkpoint.
+    if (options.steppingStarts) options.steppingStarts();
     if (checkpoint) {
-        out.restore(checkpoint->run);
+        out.restore(checkpoint->run, checkpoint->state.time);
         sim.resume(std::move(checkpoint->state), options.restart.string());
         checkpoint.reset();
         checkIntervals(c, sim.state().initialDt);
@@ -445,7 +475,6 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         return false;
     };
     const long firstStep = sim.state().step;
-    if (options.steppingStarts) options.steppingStarts();
     out.progress().start(sim.state().time, firstStep);
     const auto t0 = Clock::now();
     try {
@@ -471,6 +500,8 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         throw;
     }
     out.progress().clear();
+    // A finished run ends with a checkpoint too: --restart --end-time continues it.
+    if (!summary.interrupted && c.checkpointInterval > 0.0) out.checkpoint(sim.state());
     summary.wallSeconds = std::chrono::duration<double>(Clock::now() - t0).count();
     summary.steps = sim.state().step;
     summary.time = sim.state().time;

@@ -18,19 +18,22 @@
 #include <vector>
 
 #include "case_config.hpp"
+#include "progress.hpp"
 #include "run_log.hpp"
 
 namespace gsph::solver {
 
 struct RunOptions {
     std::filesystem::path runDir;
-    bool progress = false;            ///< draw a progress bar on stdout (only on a terminal)
+    /// A bar on a terminal, plain lines every minute elsewhere (progress.hpp), or none.
+    ProgressBar::Mode progress = ProgressBar::Mode::Off;
     RunLog* log = nullptr;            ///< run.log (lines are also printed)
     std::filesystem::path restart;    ///< checkpoint to continue from (empty: start at t = 0)
     long stopAfterSteps = 0;          ///< > 0: stop as on a signal once the step counter reaches it
     std::function<int()> stopSignal;  ///< the signal received, or 0 (checked after every step)
-    /// Called once the first step is about to be taken: from then on a signal stops the run
-    /// after the current step with a checkpoint (before, there is nothing to save).
+    /// Called once the run is set up, before it writes its first file: from then on a signal
+    /// stops the run after the current step with a checkpoint (before, there is nothing to
+    /// save).
     std::function<void()> steppingStarts;
     /// A fresh run into a folder that holds an earlier run's files (snapshots, checkpoint,
     /// history): false refuses with InputError, true removes them first.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// SIGINT/SIGTERM for gsph-solve: until the first step (reading, set-up: nothing to save) a
+// SIGINT/SIGTERM for gsph-solve: during set-up (reading, neighbour lists: nothing to save) a
 // signal terminates at once (the default action); once stepping, the first signal only sets a
 // flag (async-signal-safe), the step loop sees it after the current step, writes a checkpoint
 // and a final snapshot and exits. A second signal terminates at once.

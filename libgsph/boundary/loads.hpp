@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Applied loads (issue #6): gravity, a body force m_a g on every particle, and forces on named
+// Applied loads: gravity, a body force m_a g on every particle, and forces on named
 // particle sets, a total force F shared by mass, f_a = F m_a / Σ_set m (so the set accelerates
 // uniformly under F alone, and Σ f_a = F exactly up to round-off). Both are constant in time,
 // so they are summed once into one force per particle; the integrator adds it at every force

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Penalty contact between particles of different bodies (issue #6; docs/theory.md "Contact").
+// Penalty contact between particles of different bodies (docs/theory.md "Contact").
 // Pairs are found in the current configuration every step: a hashed cell list over x, cells no
 // smaller than the largest contact distance, rebuilt from scratch each call (exact, no skin),
 // over the particles that lie within another body's bounding box grown by that distance.

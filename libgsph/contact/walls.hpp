@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Rigid walls (issue #6; docs/theory.md "Walls"): planes and cylinders in rigid translation,
+// Rigid walls (docs/theory.md "Walls"): planes and cylinders in rigid translation,
 // p(t) = point + displacement(t) (velocity·t, or after a linear speed ramp). A particle a at x_a
 // penetrates a wall by
 //   plane    (unit normal n towards the bodies):  g_a = ρ_a(n) − (x_a − p)·n,

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// A strip of consecutive particles evaluated together in SIMD lanes (issue #2).
+// A strip of consecutive particles evaluated together in SIMD lanes.
 //
 // The stencil kernels (kinematics/deformation_gradient.cpp, forces/internal_force.cpp) run a
 // strip of particles through a whole stencil with the per-particle sums held in registers. A

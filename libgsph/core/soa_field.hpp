@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Per-particle fixed-size tensors stored as a structure of arrays (issue #2).
+// Per-particle fixed-size tensors stored as a structure of arrays.
 //
 // Component (r, c) of every particle is one contiguous array, so a loop over consecutive
 // particles (the stencil blocks of neighbors/stencil_blocks.hpp) reads each component with one

@@ -18,7 +18,7 @@
 // always agree without writing each other's entries: the check runs in parallel and gives the
 // same result for any thread count.
 //
-// Failed particles (issue #9, ductile fracture): a body may also break bonds by Johnson–Cook
+// Failed particles (ductile fracture): a body may also break bonds by Johnson–Cook
 // damage (State::damage, FailedBondRule per particle): with Either, the bond of a pair (a, b)
 // breaks for good once a or b has failed (D ≥ 1); with Both, once a and b have. Both sides
 // evaluate the same rule from the same damages, so they agree as for the stretch. A failed

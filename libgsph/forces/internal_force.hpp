@@ -6,7 +6,7 @@
 // and Σ_c f_c = 0 to round-off. Artificial viscosity adds the pair pressure q_cb through
 // N = V J F^{-T} G the same way; hourglass control adds central pair forces.
 //
-// Speed (issue #2): particles in stencil blocks (neighbors/stencil_blocks.hpp) run the pair
+// Speed: particles in stencil blocks (neighbors/stencil_blocks.hpp) run the pair
 // terms stencil entry by stencil entry across the block on SoA fields, vectorised across
 // particles; the other particles take the CSR list. Both evaluate the same pair formulas
 // (forces/artificial_viscosity.hpp, forces/hourglass.hpp); the block a particle belongs to is

@@ -52,7 +52,7 @@ struct SolverOptions {
     /// failure/brittle_bonds.hpp), in any body, breakable or not.
     std::vector<CrackPatch> precracks;
     /// Per body id: when Johnson–Cook damage breaks bonds (failure/brittle_bonds.hpp: Either
-    /// or Both ends failed; ductile fracture, issue #9). A body without an entry keeps them.
+    /// or Both ends failed; ductile fracture). A body without an entry keeps them.
     std::vector<FailedBondRule> failedBonds;
     /// > 0: a stable Δt below this fraction of the run's first Δt (State::initialDt) stops the
     /// run with NumericalError naming the particle that limits it (0 = only Δt ≤ 0 or NaN).
@@ -78,7 +78,7 @@ struct PhaseTimes {
 struct StepWorkspace {
     StressFactors factors;
     ParticleFields fields;              ///< SoA x, v, F, X for the pair loops
-    std::vector<StencilBlocks> blocks;  ///< per body: stencil and CSR blocks (issue #2)
+    std::vector<StencilBlocks> blocks;  ///< per body: stencil and CSR blocks
     ForceParts parts;
     std::vector<Vec3> force;
     std::vector<double> lengthScale;    ///< current spacing ℓ_a

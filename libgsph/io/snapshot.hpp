@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
-// HDF5, format "gsph-snapshot" 0.4 (provisional until the solver issue #6 settles it; layout in
+// HDF5, format "gsph-snapshot" 0.4 (layout in
 // docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)

@@ -7,7 +7,7 @@
 // Broken bonds leave the pair list (and G is recomputed), so both properties survive fracture.
 // Two evaluations of the same sum: thetaGradients (one particle, its CSR list) and
 // stencilThetaGradients (a block of particles sharing one stencil, SoA x and v, vectorised
-// across the block; issue #2). Both accumulate Σ_b x_b ⊗ w_ab in list order, then subtract
+// across the block). Both accumulate Σ_b x_b ⊗ w_ab in list order, then subtract
 // x_a ⊗ Σ_b w_ab; on a symmetric stencil the block sums (x_{a+δ} − x_{a−δ}) ⊗ w over mirrored
 // pairs instead (neighbors/stencil_blocks.hpp), equal up to round-off.
 #pragma once

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Blocks of consecutive particles that share one neighbour stencil (DESIGN §3, issue #2).
+// Blocks of consecutive particles that share one neighbour stencil (DESIGN §3).
 //
 // On a θ-lattice, the interior particles of a space (and the particles of one face or edge
 // row) have the same neighbour list up to a shift by their own index: b = a + delta_k with the

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Neighbour search on a 3-D θ-lattice: the cell list against nanoflann's k-d tree, for 1e5 and
-// 1e6 particles (issue #2 asks which is faster; the library defaults to the winner).
+// 1e6 particles (the library defaults to the winner).
 // Run: build/tests/bench/bench_neighbors
 #include <benchmark/benchmark.h>
 

@@ -233,6 +233,23 @@ TEST(PreprocDurability, RefusesToOverwriteItsInput) {
     EXPECT_EQ(test::slurp(mesh), before);
 }
 
+TEST(PreprocDurability, AFailedWriteKeepsTheEarlierParticleFile) {
+    TempDir dir;
+    const fs::path out = dir / "p.h5";
+    ASSERT_EQ(test::makeSampleParticles(out).status, 0);
+    const std::string good = test::slurp(out);
+    // The finer bar's file (215 kB) cannot be written under a 100 kB file-size limit.
+    const auto r = runCommand("bash -c " + quote("ulimit -f 100; exec " + kPreproc + " " +
+                                                 quote((kGeometries / "graded_bar.geo").string()) +
+                                                 " -o " + quote(out.string()) + " --set refine=2"));
+    EXPECT_EQ(r.status, kExitWriteFailed) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(out.string() + ": write failed"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("File too large"), std::string::npos) << r.err;
+    EXPECT_EQ(test::slurp(out), good);
+    EXPECT_EQ(dir.entries(), 1) << "no temporary file left";
+}
+
 TEST(PreprocDurability, SetParametersMustReachTheGeometry) {
     TempDir dir;
     const fs::path out = dir / "p.h5";

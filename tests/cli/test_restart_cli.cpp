@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Checkpoint and restart of gsph-solve as a user runs it (issue #6): a run interrupted (by
+// Checkpoint and restart of gsph-solve as a user runs it: a run interrupted (by
 // --stop-after-steps or SIGTERM) and restarted from its checkpoint writes snapshots, history
 // and checkpoint bit-identical to an uninterrupted run — every dataset compared bytewise — for
 // an elastic case and a Johnson–Cook case with damage and brittle bonds; a restart against a
@@ -347,11 +347,61 @@ TEST_F(Restart, CollapsedTimeStepStopsTheRunNamingTheParticle) {
     EXPECT_TRUE(fs::exists(dir_ / "run/snapshot_000001.h5")) << "final snapshot";
 }
 
+TEST_F(Restart, FinishedRunExtendedByEndTimeEqualsAStraightRun) {
+    // A to 60 µs straight; B to the case's 30 µs, then continued with --end-time 60 µs from
+    // the checkpoint a finished run ends with.
+    const fs::path a = dir_ / "A", b = dir_ / "B";
+    ASSERT_EQ(runCommand(solve(kSampleCase, particles_, a, "--end-time 6e-5")).status, 0);
+    ASSERT_EQ(runCommand(solve(kSampleCase, particles_, b)).status, 0);
+    const fs::path checkpoint = b / "checkpoint.h5";
+    EXPECT_NEAR(readCheckpoint(checkpoint).state.time, 3e-5, 1e-18);
+    const std::string restart = kSolve + " " + quote(kSampleCase.string()) + " --particles " +
+                                quote(particles_.string()) + " --restart " +
+                                quote(checkpoint.string());
+    const auto done = runCommand(restart);
+    EXPECT_EQ(done.status, 1) << "already at its end";
+    EXPECT_NE(done.err.find("give a later --end-time to continue it"), std::string::npos)
+        << done.err;
+    const auto extended = runCommand(restart + " --end-time 6e-5");
+    ASSERT_EQ(extended.status, 0) << extended.err;
+    expectSameOutputs(a, b, 20);
+}
+
+TEST_F(Restart, ARestartMayChangeTheOutputInterval) {
+    const fs::path b = dir_ / "B";
+    ASSERT_EQ(runCommand(solve(kSampleCase, particles_, b, "--stop-after-steps 150")).status,
+              kExitInterrupted);
+    const Checkpoint c = readCheckpoint(b / "checkpoint.h5");
+    // Snapshots every 6 µs from the checkpoint's time on (instead of 3 µs).
+    const auto r = runCommand(kSolve + " " + quote(kSampleCase.string()) + " --particles " +
+                              quote(particles_.string()) + " --restart " +
+                              quote((b / "checkpoint.h5").string()) + " --output-interval 6e-6");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<double> times;
+    for (int k = 0;; ++k) {
+        char name[32];
+        std::snprintf(name, sizeof name, "snapshot_%06d.h5", k);
+        if (!fs::exists(b / name)) break;
+        times.push_back(readSnapshot(b / name).time);
+    }
+    ASSERT_GE(times.size(), 3u);
+    EXPECT_NEAR(times.back(), 3e-5, 1e-15);
+    for (std::size_t k = 1; k < times.size(); ++k) {
+        if (times[k - 1] < c.state.time) continue;
+        EXPECT_NEAR(times[k] - times[k - 1], 6e-6, 1e-12) << k;
+    }
+}
+
 TEST_F(Restart, ProgressBarShowsOnATerminal) {
     // script(1) runs the solver on a pseudo-terminal: the bar shows simulated time against the
     // end time, both rates and the ETA (in a pipe it stays quiet: interruptAndRestart).
-    const auto r = runCommand("script -qec " + quote(solve(kSampleCase, particles_, dir_ / "tty")) +
-                              " /dev/null");
+    const auto onTerminal = [&](int columns, const std::string& name) {
+        return runCommand("script -qec " +
+                          quote("stty cols " + std::to_string(columns) + "; " +
+                                solve(kSampleCase, particles_, dir_ / name)) +
+                          " /dev/null");
+    };
+    const auto r = onTerminal(160, "tty");
     ASSERT_EQ(r.status, 0) << r.err;
     std::smatch m;
     const std::regex bar(
@@ -359,6 +409,21 @@ TEST_F(Restart, ProgressBarShowsOnATerminal) {
         "[-+.e0-9]+ particle-steps/s  ETA [0-9]+ s");
     EXPECT_TRUE(std::regex_search(r.out, m, bar)) << r.out.substr(0, 2000);
     EXPECT_NE(r.out.find("done: t = 3.0000e-05 s"), std::string::npos);
+    // On a narrow terminal every redraw fits in one line (no wrapping, no stacked copies).
+    const auto narrow = onTerminal(50, "narrow");
+    ASSERT_EQ(narrow.status, 0) << narrow.err;
+    int bars = 0;
+    std::size_t from = 0;
+    for (std::size_t at = narrow.out.find('\r'); at != std::string::npos;
+         from = at + 1, at = narrow.out.find('\r', from)) {
+        const std::size_t end = narrow.out.find_first_of("\r\n\033", at + 1);
+        const std::string line = narrow.out.substr(at + 1, end - at - 1);
+        if (line.find('%') == std::string::npos) continue;
+        ++bars;
+        EXPECT_LE(line.size(), 49u) << line;
+        EXPECT_NE(line.find("ETA"), std::string::npos) << line;
+    }
+    EXPECT_GT(bars, 0) << narrow.out.substr(0, 2000);
 }
 
 }  // namespace

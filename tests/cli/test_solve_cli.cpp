@@ -190,7 +190,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     EXPECT_EQ(last.size(), 320);
 }
 
-// A case with the keys of issue #6: the bar thrown at 50 m/s against a wall 0.5 mm away, with
+// A case with the solver's keys: the bar thrown at 50 m/s against a wall 0.5 mm away, with
 // friction, under gravity, its far face pushed by a set force. The wall is met, and the history
 // balances: kinetic + internal + … + contact energy − external work stays at its initial value.
 TEST(SolveCli, WallGravityAndSetForceCaseBalancesItsEnergy) {
@@ -229,7 +229,7 @@ TEST(SolveCli, WallGravityAndSetForceCaseBalancesItsEnergy) {
     EXPECT_LT(rows.back()[col("momentum_y")], 0.0);
 }
 
-// Issue #8: the Taylor bar's shape does not depend on the thread count. The sample case on a
+// The Taylor bar's shape does not depend on the thread count. The sample case on a
 // small O-grid (core + annulus, overset band, Johnson–Cook + Mie–Grüneisen, the anvil wall)
 // through ~2 µs of impact, on 1 and 2 threads: the checkpoints (the whole state) are
 // bytewise identical.

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// References of several bodies for the contact tests (issue #6): boxes laid on their own
+// References of several bodies for the contact tests: boxes laid on their own
 // lattices, one body and one space each, concatenated in body order (Reference invariant);
 // the Simulation builds pairs and geometry.
 #pragma once

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A compression pulse crossing an overset interface between two Cartesian blocks of spacing 1:2
-// (issue #4, DESIGN §7): the measurement shared by the verification test (8 cells across the
+// (DESIGN §7): the measurement shared by the verification test (8 cells across the
 // strip) and the validation run (16 cells).
 #pragma once
 

@@ -498,7 +498,7 @@ TEST(Geometries, PlateAndProjectile) {
     for (Index a : f.sets.at("plate_rim")) EXPECT_EQ(f.body[a], 0);
 }
 
-// The perforation plate (issue #9), both layouts. Shear-zone (the defaults: h = 2 mm,
+// The perforation plate, both layouts. Shear-zone (the defaults: h = 2 mm,
 // hs = 0.67 mm): the ring's radial cells are graded down to hs at r = Rp = 10 mm, so a circle of
 // cell faces lies at Rp and the two particle rows next to it sit ≈ hs/2 inside and outside it,
 // 0.67–0.80 mm apart radially (diagonals–axes); the angular cells there stay ≈ h (32 around).

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The paper's overset layouts end to end (issue #4, DESIGN §6, §7): the quarter cylinder and the
+// The paper's overset layouts end to end (DESIGN §6, §7): the quarter cylinder and the
 // O-grid cylinder (geometries/quarter_cylinder.geo, taylor_bar.geo) converted in-process by
 // gsph-preproc's conversion, read back as the solver reads a particle file (buildReference), and
 // run. At rest nothing moves; across the Cartesian-core / cylindrical-annulus interface an

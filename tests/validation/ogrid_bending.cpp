@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// An elastic cylinder bending on the O-grid (issue #4, DESIGN §6–7): free vibration of a
+// An elastic cylinder bending on the O-grid (DESIGN §6–7): free vibration of a
 // free–free steel cylinder, L = 15 D, started with the velocity of the Euler–Bernoulli first
 // bending mode; the period from the modal displacement's first return to zero (half a period)
 // against Euler–Bernoulli, on the O-grid (Cartesian core + cylindrical annulus, two spaces) and
@@ -138,7 +138,7 @@ Reference cartesianCylinder(int m, int nz) {
     return ref;
 }
 
-// Issue #4: the O-grid matches Euler–Bernoulli within 3 % with fewer particles than a uniform
+// The O-grid matches Euler–Bernoulli within 3 % with fewer particles than a uniform
 // lattice needs for the same error. Measured (corrected interface weights,
 // overset/interface_weights.hpp; hourglass α = 0.1), dynamic half period: O-grid 10×10 + 5×40 ×
 // 60 layers (18000 particles) +2.07 %; the uniform lattice of cubic cells 12 across (20160

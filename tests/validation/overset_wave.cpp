@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The pulse of Overset.WaveCrossingA1To2InterfaceReflectsLessThan3Percent on a strip twice as
 // fine (16 coarse cells across, the same physical pulse: λ = 64 coarse spacings): the
-// reflection falls with the spacing (issue #4). About a minute on one core.
+// reflection falls with the spacing. About a minute on one core.
 #include <gtest/gtest.h>
 
 #include <algorithm>

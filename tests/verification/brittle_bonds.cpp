@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Brittle bonds (issue #5, DESIGN §5): a bond breaks for good at the stretch εmax, and the
+// Brittle bonds (DESIGN §5): a bond breaks for good at the stretch εmax, and the
 // kinematics stay consistent after it does (DESIGN §3).
 //
 // The bar test: a free 3-D bar (ν = 0, so the bar wave is exactly 1-D at c = √(E/ρ)) carries two
@@ -160,7 +160,7 @@ TEST(BrittleBonds, BarBreaksWhereAndWhenTheStretchCriterionSays) {
     EXPECT_LT(farthest, 0.5 * lambda);
 }
 
-// Energy balance of a bar pulled apart (issue #9): both end layers are driven outwards at v0, so
+// Energy balance of a bar pulled apart: both end layers are driven outwards at v0, so
 // the bar is stretched until bonds break and it comes apart, while the prescribed velocities do
 // work on it. The ledger's total (kinetic + elastic + fracture − boundary work; no viscosity or
 // hourglass control here) must stay at its value after the start (the driven layers' ½mv0²,
@@ -230,7 +230,7 @@ TEST(BrittleBonds, EnergyBalanceOfABarPulledApartBooksTheFractureEnergy) {
     EXPECT_LT(intact.worstImbalance, 1e-2 * intact.energy.boundaryWork);
 }
 
-// Initial cracks (issue #9): the bonds whose reference segment crosses a planar patch start
+// Initial cracks: the bonds whose reference segment crosses a planar patch start
 // broken. Brute force: a pair crosses the patch when its segment X_a + t (X_b − X_a) meets the
 // patch's plane at t ∈ [0, 1] inside the parallelogram, solved here as one 3×3 system
 // [edge1 edge2 −(X_b − X_a)] (s, u, t) = X_a − corner (planes placed off every particle, so no
@@ -462,7 +462,7 @@ INSTANTIATE_TEST_SUITE_P(BrittleBonds, CutRuleOnALattice, ::testing::Values(0.6,
                                                       : std::string("StretchedCells");
                          });
 
-// Ductile fracture (issue #9): with FailedBondRule::Either, every bond of a Johnson–Cook particle
+// Ductile fracture: with FailedBondRule::Either, every bond of a Johnson–Cook particle
 // breaks once its damage reaches 1. A steel bar (Weldox 460E strength, damage constants scaled
 // down so that it fails within a short pull: εf ≈ 0.15 at σ* = 1/3; 10 × 2 × 2 mm, 25 × 5 × 5
 // particles) is pulled apart at ±20 m/s from its end layers. Claims: the bar comes apart (no

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Checkpoints and the run guards in the library (issue #6): a checkpoint holds every array
+// Checkpoints and the run guards in the library: a checkpoint holds every array
 // and scalar of the State bit for bit; a Simulation resumed from it steps exactly as the one
 // that wrote it; a state of another shape is refused; a non-finite stress stops the step with
 // a NumericalError naming the particle, its reference position and the time.

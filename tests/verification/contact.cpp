@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Contact, walls and loads (issue #6), against closed forms:
+// Contact, walls and loads, against closed forms:
 //   * an elastic bar hitting a rigid wall at 5 m/s: contact time 2L/c, rebound at the impact
 //     speed, energy conserved (penalty springs' energy in the balance);
 //   * two blocks of different spacing and material colliding: momentum conserved to round-off,

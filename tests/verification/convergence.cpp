@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Convergence on a problem with a known answer (issue #2): the first free–free axial mode of a
+// Convergence on a problem with a known answer: the first free–free axial mode of a
 // bar, u = A cos(πx/L) sin(ωt), ω = πc/L, c = √(E/ρ). With ν = 0 plane strain is exactly
 // uniaxial, so the 2-D bar has the 1-D answer T = 2L/c. The bar is graded 3:1 along its
 // length, so the test also covers a graded space. The period error is measured at four

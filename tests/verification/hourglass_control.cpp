@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The difference the hourglass control makes (DESIGN §4, issue #2). A checkerboard velocity
+// The difference the hourglass control makes (DESIGN §4). A checkerboard velocity
 // v = v0 (−1)^{i+j+k} e_z on a free elastic block is invisible to the SPH deformation gradient
 // inside the block (the symmetric stencil sums it to zero), so without control it meets no
 // stiffness there and the particles drift apart: the hourglass error η grows steadily. With

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Oscillating cantilever plate (Gray, Monaghan & Swift 2001), 2-D plane strain, small
-// amplitude (Vf = 0.005, tip amplitude ≈ 0.06 L). Issue #2 asks for:
+// amplitude (Vf = 0.005, tip amplitude ≈ 0.06 L). The bar:
 //  * a uniform layout: period within 3 % of the analytic T = 2π/ω, ω² = E H² k⁴/(12ρ(1−ν²));
 //  * total energy drift < 1 % per period without artificial viscosity;
 //  * a layout graded through the thickness with half the particles: the same within 5 %.

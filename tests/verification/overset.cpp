@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Overset interfaces (issue #4, DESIGN §6, §7) on two Cartesian blocks of spacing 1:2 in one
+// Overset interfaces (DESIGN §6, §7) on two Cartesian blocks of spacing 1:2 in one
 // body, 2-D and 3-D: affine motion gives F exactly across the interface; under a uniform and
 // a linear stress the internal force equals the exact divergence V ∇·σ; linear momentum is
 // conserved to round-off across the interface.

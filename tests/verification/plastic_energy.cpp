@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Energy bookkeeping with Johnson–Cook plasticity (issue #5): kinetic + elastic + plastic work
+// Energy bookkeeping with Johnson–Cook plasticity: kinetic + elastic + plastic work
 // + damage dissipation + the ledger's viscous and hourglass works − boundary work stays equal
 // to its initial value within 1 % of the energy that moved.
 //   * PlasticImpact: a short copper bar (10 × 2 × 2 mm, 25 × 5 × 5 particles) at 150 m/s

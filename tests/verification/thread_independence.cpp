@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Results do not depend on the thread count (issue #2, DESIGN §9): every loop gathers into
+// Results do not depend on the thread count (DESIGN §9): every loop gathers into
 // its own particle and every sum over particles has a fixed order, so 1 and 2 threads give
 // bit-identical states (compared with memcmp, not a tolerance). The same holds for the two
 // strip widths of the stencil kernels (core/lanes.hpp): every lane does the same operations.

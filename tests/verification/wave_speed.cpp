@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // A 1-D compression pulse in a slender 3-D steel bar (1.5 m × 5 cm × 5 cm, ν = 0.3, free
-// lateral surfaces) travels at the bar wave speed √(E/ρ) within 1 % (issue #2). The pulse
+// lateral surfaces) travels at the bar wave speed √(E/ρ) within 1 %. The pulse
 // starts as a right-running wave, v_x = v0 ½(1 − cos 2πξ), σ_xx = −ρ c v_x, over λ = 0.5 m
 // (10 bar widths): the physical (Pochhammer) lag of its energy, ≈ 3ν²k²r_g²/2 ≈ 0.9 % at the
 // pulse's central wavenumber, stays inside the tolerance (a 0.25 m pulse lags 2.6 %, as it

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Johnson–Cook plasticity, damage and the equations of state at one material point, against
-// closed forms (issue #5): elastic slopes, the flow curve at three strain rates and two
+// closed forms: elastic slopes, the flow curve at three strain rates and two
 // temperatures, adiabatic heating, damage at failure for a constant triaxiality, objectivity.
 // The points are driven by the material-point driver (materials/material_point_driver.hpp),
 // which takes the solver's own update path.

@@ -38,7 +38,7 @@ TEST(ThetaSearch, InteriorParticlesSeeTheFullStencil) {
         EXPECT_EQ(ref.pairs.end(centre) - ref.pairs.begin(centre), stencilSize(3, kappa))
             << "κ = " << kappa;
     }
-    EXPECT_EQ(stencilSize(3, 1.2), 56);  // "about 55 neighbours" of issue #2
+    EXPECT_EQ(stencilSize(3, 1.2), 56);  // "about 55 neighbours"
     Reference ref2 = box(2, {9, 9, 1}, 1.2);
     buildPairs(ref2);
     const Index c2 = latticeIndex(ref2.spaces[0].cells, 4, 4, 0);
