@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: MIT
 // Patch tests of DESIGN §7 on graded (separable) and cylindrical spaces, in 2-D and 3-D:
-//  * an affine motion gives F exactly (≤ 1e-10) on every particle, boundary included;
+//  * an affine motion gives F exactly (DESIGN asks ≤ 1e-10; asserted ≤ 2e-13, a few times the
+//    round-off measured) on every particle, boundary included;
 //  * a uniform stress gives zero internal force on interior particles (discrete Piola
-//    identity, ≤ 1e-10 relative to a single-pair force);
+//    identity, ≤ 1e-14 relative to a single-pair force);
 //  * on a non-separable 3-D map the residual converges at second order (measured);
-//  * an isolated body conserves linear momentum to round-off over 1000 steps.
+//  * an isolated body conserves linear momentum to round-off (≤ 1e-15 of Σm|v|) over 1000
+//    steps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -80,7 +82,7 @@ TEST(PatchTest, AffineMotionGivesExactF) {
         for (const Mat3& Fa : F) worst = std::max(worst, (Fa - Ad).cwiseAbs().maxCoeff());
         std::printf("[patch] %-42s affine F max error %.2e (%d particles)\n", s.name, worst,
                     ref.size());
-        EXPECT_LE(worst, 1e-10) << s.name;
+        EXPECT_LE(worst, 2e-13) << s.name;  // measured ≤ 4.4e-14
     }
 }
 
@@ -134,7 +136,7 @@ TEST(PatchTest, UniformStressGivesZeroInteriorForce) {
         std::printf(
             "[patch] %-42s uniform stress: max |f|/|f_pair| = %.2e over %zu interior particles\n",
             s.name, worst, interior.size());
-        EXPECT_LE(worst, 1e-10) << s.name;
+        EXPECT_LE(worst, 1e-14) << s.name;  // measured ≤ 1.9e-15
         // Boundary particles do carry force (the traction σn): the test can fail.
         double boundaryMax = 0.0;
         for (const Vec3& fa : f) boundaryMax = std::max(boundaryMax, fa.norm());
@@ -205,7 +207,7 @@ TEST(PatchTest, IsolatedBodyConservesMomentumOver1000Steps) {
         const EnergyReport end = sim.energy();
         const double drift = (end.momentum - start.momentum).norm() / scale;
         std::printf("[patch] %-42s momentum drift over 1000 steps: %.2e of Σm|v|\n", s.name, drift);
-        EXPECT_LE(drift, 1e-12) << s.name;
+        EXPECT_LE(drift, 1e-15) << s.name;  // measured ≤ 1.1e-16
     }
 }
 
