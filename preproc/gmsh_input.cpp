@@ -459,6 +459,8 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
         gmsh::open(wrapper.path().string());
     } catch (const std::string& e) {
         throw InputError(source + ": gmsh cannot read it: " + gmshReason(e));
+    } catch (const std::exception& e) {  // gmsh's parser on a damaged file (length_error, …)
+        throw InputError(source + ": gmsh cannot read it (" + e.what() + ")");
     }
     std::vector<std::string> log;
     gmsh::logger::get(log);

@@ -54,8 +54,9 @@ class TableReader {
             if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
             return fallback;
         }
-        if (const auto i = n->value<std::int64_t>(); i && n->is_integer())
-            return std::to_string(*i);
+        // is_integer first: toml++'s value<int64_t>() of a float such as 5e66 converts it to
+        // int64 before the range check (undefined behaviour).
+        if (n->is_integer()) return std::to_string(*n->value<std::int64_t>());
         const std::optional<std::string> v = n->value<std::string>();
         if (!v || v->empty()) fail(n, "'" + key + "' in " + where_ + " must be a non-empty string");
         return *v;

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: MIT
 #include "io/hdf5_file.hpp"
 
+#include <cstdint>
+#include <string>
 #include <type_traits>
+#include <vector>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -96,6 +99,38 @@ std::string readOneString(hid_t fileStringType, ReadFn&& read) {
     std::string buffer(size + 1, '\0');
     if (read(mem.get(), buffer.data()) < 0) return {};
     return std::string(buffer.c_str());
+}
+
+/// The number of elements of a dataset of shape `shape`, checked against the bytes the file
+/// stores for it: a corrupt dataspace can claim 2^60 elements, which must be refused before
+/// anything is allocated. Products in 64 bits, checked for overflow. (A chunked dataset may
+/// legitimately store less, e.g. compressed: only its count is checked.)
+std::size_t storedCount(const std::string& file, const std::string& path, hid_t dataset, hid_t type,
+                        const std::vector<hsize_t>& shape) {
+    const auto corrupt = [&](const std::string& what) {
+        return IoError(file + ": dataset " + path + " " + what + " (a corrupt file)");
+    };
+    std::uint64_t count = 1;
+    for (hsize_t d : shape) {
+        if (__builtin_mul_overflow(count, std::uint64_t{d}, &count)) {
+            throw corrupt("has a shape whose element count overflows");
+        }
+    }
+    std::uint64_t bytes = 0;
+    if (__builtin_mul_overflow(count, std::uint64_t{H5Tget_size(type)}, &bytes)) {
+        throw corrupt("has a shape whose size in bytes overflows");
+    }
+    Id plist(H5Dget_create_plist(dataset), H5Pclose);
+    const H5D_layout_t layout = plist.valid() ? H5Pget_layout(plist.get()) : H5D_LAYOUT_ERROR;
+    if (layout == H5D_CONTIGUOUS || layout == H5D_COMPACT) {
+        const std::uint64_t stored = H5Dget_storage_size(dataset);
+        if (stored < bytes) {
+            throw corrupt("claims " + std::to_string(count) + " elements (" +
+                          std::to_string(bytes) + " bytes) but stores " + std::to_string(stored) +
+                          " bytes");
+        }
+    }
+    return static_cast<std::size_t>(count);
 }
 
 }  // namespace
@@ -252,9 +287,8 @@ std::vector<T> File::read(const std::string& path, std::vector<std::size_t>& dim
     if (rank < 0) fail(path, "cannot read the shape of");
     std::vector<hsize_t> shape(static_cast<std::size_t>(rank));
     H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
+    const std::size_t count = storedCount(name_, path, dataset.get(), type.get(), shape);
     dims.assign(shape.begin(), shape.end());
-    std::size_t count = 1;
-    for (std::size_t d : dims) count *= d;
     std::vector<T> values(count);
     if (count > 0 &&
         H5Dread(dataset.get(), memoryType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
@@ -314,8 +348,9 @@ std::vector<std::string> File::readStrings(const std::string& path) const {
     if (H5Sget_simple_extent_ndims(space.get()) != 1) {
         throw IoError(name_ + ": dataset " + path + " is not one-dimensional");
     }
-    hsize_t n = 0;
-    H5Sget_simple_extent_dims(space.get(), &n, nullptr);
+    std::vector<hsize_t> shape(1, 0);
+    H5Sget_simple_extent_dims(space.get(), shape.data(), nullptr);
+    const hsize_t n = storedCount(name_, path, dataset.get(), type.get(), shape);
     std::vector<std::string> values;
     if (n == 0) return values;
     if (H5Tis_variable_str(type.get()) > 0) {

@@ -2,6 +2,8 @@
 #include "io/particle_file.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "core/error.hpp"
@@ -73,6 +75,35 @@ std::vector<Index> validateOrdering(const ParticleFile& f) {
     return bodyOfSpace;
 }
 
+/// /spaces/cells against the particles (docs/formats.md): a particle occupies one cell of its
+/// space, so a space has at most n_i n_j n_k particles, and exactly that many when there is no
+/// /particles/lattice_index (the particle's rank in its space is then its cell). Cell ids are
+/// Index values, so a space may not have more cells than Index can count. Products in 64 bits.
+void validateCellCounts(const ParticleFile& f) {
+    std::vector<std::int64_t> particles(f.spaces.size(), 0);
+    for (const Index s : f.space) ++particles[static_cast<std::size_t>(s)];
+    constexpr std::int64_t kMaxCells = std::numeric_limits<Index>::max();
+    for (std::size_t s = 0; s < f.spaces.size(); ++s) {
+        const auto& c = f.spaces[s].cells;  // each ≥ 1 (validateSpaces)
+        const std::string cells = "space " + std::to_string(s) + ": /spaces/cells " +
+                                  std::to_string(c[0]) + "x" + std::to_string(c[1]) + "x" +
+                                  std::to_string(c[2]);
+        std::int64_t product = std::int64_t{c[0]} * c[1];  // < 2^62
+        if (product <= kMaxCells) product *= c[2];
+        if (product > kMaxCells) {
+            invalid(cells + " has more cells than a space can hold (" + std::to_string(kMaxCells) +
+                    ")");
+        }
+        const std::string counts = " = " + std::to_string(product) + " cells for " +
+                                   std::to_string(particles[s]) + " particles";
+        if (particles[s] > product) invalid(cells + counts + " (at most one per cell)");
+        if (f.latticeIndex.empty() && particles[s] != product) {
+            invalid(cells + counts +
+                    " (without /particles/lattice_index every cell holds one particle)");
+        }
+    }
+}
+
 /// The overset entries and the transient flags (DESIGN §6; docs/formats.md).
 void validateOverset(const ParticleFile& f, const std::vector<Index>& bodyOfSpace) {
     const OversetEntries& o = f.overset;
@@ -132,6 +163,7 @@ void validateParticleFile(const ParticleFile& f) {
     }
     validateSpaces(f);
     const std::vector<Index> bodyOfSpace = validateOrdering(f);
+    validateCellCounts(f);
     validateOverset(f, bodyOfSpace);
     for (const auto& [name, members] : f.sets) {
         if (!validSetName(name)) invalid("set name '" + name + "' is not a valid HDF5 name");

@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// The inputs the fuzz targets (tests/fuzz, docs/testing.md) found faults with, kept in
+// tests/data/fuzz_regressions/<target>/: each goes through the very calls of its target
+// (tests/fuzz/entry_points.hpp), under the same file name, and must succeed or throw a typed
+// gsph::Error — never crash or throw anything else.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <exception>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/error.hpp"
+#include "fuzz/entry_points.hpp"
+#include "temp_dir.hpp"
+
+namespace gsph {
+namespace {
+
+const std::filesystem::path kRegressions =
+    std::filesystem::path(GSPH_SOURCE_DIR) / "tests/data/fuzz_regressions";
+
+std::vector<std::filesystem::path> regressionFiles(const std::string& target) {
+    std::vector<std::filesystem::path> files;
+    const std::filesystem::path dir = kRegressions / target;
+    if (!std::filesystem::exists(dir)) return files;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.is_regular_file()) files.push_back(entry.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+/// Success, or a gsph::Error; the message of an error, empty on success.
+::testing::AssertionResult typedOutcome(const std::function<void()>& read, std::string& message) {
+    try {
+        read();
+        message.clear();
+        return ::testing::AssertionSuccess();
+    } catch (const Error& e) {
+        message = e.what();
+        return ::testing::AssertionSuccess();
+    } catch (const std::exception& e) {
+        return ::testing::AssertionFailure() << "untyped exception: " << e.what();
+    }
+}
+
+/// Runs every regression file of `target` through `read`, copied under `name` into a scratch
+/// folder as the fuzz target writes its input; returns the number of files.
+std::size_t runAll(const std::string& target, const std::string& name,
+                   const std::function<void(const std::filesystem::path&)>& read) {
+    const std::vector<std::filesystem::path> files = regressionFiles(target);
+    for (const std::filesystem::path& file : files) {
+        test::TempDir dir;
+        std::filesystem::copy_file(file, dir / name);
+        std::string message;
+        EXPECT_TRUE(typedOutcome([&] { read(dir / name); }, message)) << file;
+    }
+    return files.size();
+}
+
+TEST(FuzzRegressions, CaseFilesGiveATypedErrorOrSucceed) {
+    if (runAll("case", "case.toml", fuzz::readCase) == 0) GTEST_SKIP() << "no regression files";
+}
+
+TEST(FuzzRegressions, MaterialFilesGiveATypedErrorOrSucceed) {
+    if (runAll("material", "fuzz_material.toml", fuzz::readMaterial) == 0)
+        GTEST_SKIP() << "no regression files";
+}
+
+TEST(FuzzRegressions, ParticleFilesGiveATypedErrorOrSucceed) {
+    EXPECT_GT(runAll("particle_file", "particles.h5", fuzz::readParticles), 0u);
+}
+
+TEST(FuzzRegressions, MeshFilesGiveATypedErrorOrSucceed) {
+    if (runAll("msh", "fuzz.msh", fuzz::readMesh) == 0) GTEST_SKIP() << "no regression files";
+}
+
+// /spaces/cells that disagree with the file's particles: 32-bit products of these overflowed in
+// the cell list (SIGSEGV), or sized it at 8 GB. The reader refuses them, naming the file and
+// the dataset.
+TEST(FuzzRegressions, SpaceCellsThatDisagreeWithTheParticlesAreRefused) {
+    const char* files[] = {"cells_1073741824x4x4.h5", "cells_2147483647x2147483647x2147483647.h5",
+                           "cells_1048576x1x1_without_lattice_index.h5"};
+    for (const char* name : files) {
+        const std::filesystem::path file = kRegressions / "particle_file" / name;
+        ASSERT_TRUE(std::filesystem::exists(file)) << file;
+        try {
+            fuzz::readParticles(file);
+            ADD_FAILURE() << file << " was accepted";
+        } catch (const IoError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+            EXPECT_NE(message.find("/spaces/cells"), std::string::npos) << message;
+        }
+    }
+}
+
+// A flipped byte made /spaces/dtheta claim 263882790666241 elements in a 16 kB file: the reader
+// allocated them (2 PB) before reading. Refused from the bytes the file stores, naming the
+// dataset.
+TEST(FuzzRegressions, DataspaceLargerThanItsStorageIsRefused) {
+    const std::filesystem::path file =
+        kRegressions / "particle_file" / "corrupt_dataspace_spaces_dtheta.h5";
+    try {
+        fuzz::readParticles(file);
+        ADD_FAILURE() << file << " was accepted";
+    } catch (const IoError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+        EXPECT_NE(message.find("/spaces/dtheta"), std::string::npos) << message;
+    }
+}
+
+}  // namespace
+}  // namespace gsph
