@@ -306,6 +306,25 @@ TEST(PreprocDurability, ACrashInsideGmshIsAClearError) {
         << r.err;
 }
 
+TEST(PreprocDurability, MshFilesThatFaultInsideGmshAreOneLineErrors) {
+    // The fuzzers' inputs that crash or throw inside gmsh 4.8's own readers
+    // (tests/fuzz/third_party_findings): gmsh runs in a child process, so each is our error.
+    TempDir dir;
+    int files = 0;
+    for (const auto& e :
+         fs::directory_iterator(test::kSourceDir / "tests/fuzz/third_party_findings")) {
+        if (e.path().extension() != ".msh") continue;
+        ++files;
+        const auto r = runCommand(kPreproc + " " + quote(e.path().string()) + " -o " +
+                                  quote((dir / "p.h5").string()));
+        EXPECT_EQ(r.status, kExitError) << e.path() << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(e.path().string() + ": "), std::string::npos) << r.err;
+        EXPECT_FALSE(fs::exists(dir / "p.h5"));
+    }
+    EXPECT_GE(files, 5);
+}
+
 TEST(PostDurability, BadOptionsAndUnwritableOutputsAreOneLineErrors) {
     TempDir dir;
     ASSERT_EQ(test::makeSampleParticles(dir / "particles.h5").status, 0);
