@@ -392,7 +392,7 @@ std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& 
 RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     ParticleFile file;
     try {
-        file = readParticleFile(c.particles);
+        file = readParticleFileIsolated(c.particles);
     } catch (const Error& e) {
         throw InputError(c.caseFile.string() + ":" + std::to_string(c.particlesLine) +
                          ": particle file: " + e.what());

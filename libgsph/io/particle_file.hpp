@@ -71,6 +71,12 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& fi
 /// gsph-particles file, of an unsupported major version, or inconsistent.
 ParticleFile readParticleFile(const std::filesystem::path& path);
 
+/// readParticleFile in a child process (io/child_process.hpp): a damaged or crafted file that
+/// crashes HDF5's own parser (tests/fuzz/third_party_findings) is an IoError naming the file
+/// and the signal instead of a crash of the caller. Same results and errors otherwise. For
+/// tools, before they start threads.
+ParticleFile readParticleFileIsolated(const std::filesystem::path& path);
+
 /// The reference configuration of a run from a particle file: X, θ, volume, body, space,
 /// spaces, overset entries (copied as they are), dim = 3, κ, and ρ0 per particle. Derived fields
 /// (pairs, metrics, mass) are filled by buildPairs and computeGeometry (mass = ρ0 ω det M:
