@@ -263,9 +263,12 @@ class RunOutputs {
             schedule.nextOutput = firstPast(c_.outputInterval);
         if (changed("checkpoint_interval", c_.checkpointInterval) && c_.checkpointInterval > 0.0)
             schedule.nextCheckpoint = firstPast(c_.checkpointInterval);
-        if (time >= c_.endTime - reachedTolerance())
-            throw InputError(file.string() + format(": the run is at t = %.6e s", time, 0) +
-                             ", already at its end time; give a later --end-time to continue it");
+        if (time >= c_.endTime - reachedTolerance()) {
+            char at[64];
+            std::snprintf(at, sizeof at, "%.6e", time);
+            throw InputError(file.string() + ": the run is at t = " + at +
+                             " s, already at its end time; give a later --end-time to continue it");
+        }
     }
     /// After every step: the progress bar, and a checkpoint at the first step at or past each
     /// m·checkpoint_interval (none at the end time: the run is done then).
