@@ -64,6 +64,9 @@ std::string runInChild(const std::string& source, const std::string& what,
     }
     if (pid == 0) {
         ::close(fds[0]);
+        // A fault or the deadline ends the child by its signal, whatever handlers the parent
+        // installed (a crash reporter, a sanitizer, a fuzzer): the parent reads the signal.
+        for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGALRM}) ::signal(sig, SIG_DFL);
         if (timeoutSeconds > 0) ::alarm(timeoutSeconds);
         runChild(fds[1], work);
     }

@@ -454,7 +454,7 @@ std::vector<std::string> readStrings(ByteReader& r) {
 
 }  // namespace
 
-ParticleFile readParticleFileIsolated(const std::filesystem::path& path) {
+ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigned deadlineSeconds) {
     const std::string source = path.string();
     const std::string bytes = runInChild(
         source, "the particle-file reader",
@@ -491,7 +491,7 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path) {
             throw IoError(source + ": the file crashed or hung HDF5's reader (" + reason +
                           "): it is damaged or not a particle file");
         },
-        readDeadline(path));
+        deadlineSeconds > 0 ? deadlineSeconds : readDeadline(path));
     ByteReader r(bytes, source);
     ParticleFile f;
     f.X = r.array<Vec3>();

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: MIT
-// libFuzzer target: bytes → a particle file → gsph::readParticleFile, validateParticleFile and
-// buildReference (docs/testing.md).
+// libFuzzer target: bytes → a particle file → the reader as gsph-solve calls it
+// (readParticleFileIsolated: HDF5's parser in a child process), validateParticleFile and
+// buildReference (docs/testing.md): any crash, hang or sanitizer report is a finding.
+// GSPH_FUZZ_IN_PROCESS=1 calls readParticleFile in this process instead (HDF5's parser and our
+// reader under coverage; a crash inside HDF5 is HDF5's).
 //
 // Raw bytes rarely get past HDF5's open, so the input is read two ways:
 //   * it starts with the HDF5 signature: the bytes are the file (raw mode; the seed corpus holds
@@ -397,6 +400,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     if (const char* keep = std::getenv("GSPH_FUZZ_SAVE")) {
         std::filesystem::copy_file(path, keep, std::filesystem::copy_options::overwrite_existing);
     }
-    gsph::fuzz::expectTypedOutcome([&] { gsph::fuzz::readParticles(path); });
+    gsph::fuzz::expectTypedOutcome([&] {
+        gsph::fuzz::parsersInProcess() ? gsph::fuzz::readParticlesInProcess(path)
+                                       : gsph::fuzz::readParticles(path);
+    });
     return 0;
 }

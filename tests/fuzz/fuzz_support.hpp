@@ -38,6 +38,14 @@ inline const std::filesystem::path& scratchDir() {
     return dir;
 }
 
+/// GSPH_FUZZ_IN_PROCESS=1: the particle-file and .msh targets call HDF5's and gmsh's parsers in
+/// this process (under coverage; run with -fork, a crash inside a parser is theirs) instead of
+/// in a child process as the tools do (entry_points.hpp).
+inline bool parsersInProcess() {
+    static const bool inProcess = std::getenv("GSPH_FUZZ_IN_PROCESS") != nullptr;
+    return inProcess;
+}
+
 /// Writes `size` bytes to `name` in the scratch folder; returns its path.
 inline std::filesystem::path writeScratch(const std::string& name, const std::uint8_t* data,
                                           std::size_t size) {

@@ -70,25 +70,33 @@ TEST(FuzzRegressions, MaterialFilesGiveATypedErrorOrSucceed) {
         GTEST_SKIP() << "no regression files";
 }
 
+// Both forms of the particle-file and .msh readers: in process (our code around the parser, under
+// this build's sanitizers) and as the tools call them (the parser in a child process).
 TEST(FuzzRegressions, ParticleFilesGiveATypedErrorOrSucceed) {
+    EXPECT_GT(runAll("particle_file", "particles.h5", fuzz::readParticlesInProcess), 0u);
     EXPECT_GT(runAll("particle_file", "particles.h5", fuzz::readParticles), 0u);
 }
 
 TEST(FuzzRegressions, MeshFilesGiveATypedErrorOrSucceed) {
-    if (runAll("msh", "fuzz.msh", fuzz::readMesh) == 0) GTEST_SKIP() << "no regression files";
+    if (runAll("msh", "fuzz.msh", fuzz::readMeshInProcess) == 0)
+        GTEST_SKIP() << "no regression files";
+    EXPECT_GT(runAll("msh", "fuzz.msh", fuzz::readMesh), 0u);
 }
 
-// A particle-file regression is refused with an IoError naming the file and `dataset`.
+// A particle-file regression is refused by both forms of the reader with an IoError naming the
+// file and `dataset`.
 void expectRefusedNaming(const char* name, const char* dataset) {
     const std::filesystem::path file = kRegressions / "particle_file" / name;
     ASSERT_TRUE(std::filesystem::exists(file)) << file;
-    try {
-        fuzz::readParticles(file);
-        ADD_FAILURE() << file << " was accepted";
-    } catch (const IoError& e) {
-        const std::string message = e.what();
-        EXPECT_NE(message.find(file.string()), std::string::npos) << message;
-        EXPECT_NE(message.find(dataset), std::string::npos) << message;
+    for (const auto read : {fuzz::readParticlesInProcess, fuzz::readParticles}) {
+        try {
+            read(file);
+            ADD_FAILURE() << file << " was accepted";
+        } catch (const IoError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find(file.string()), std::string::npos) << message;
+            EXPECT_NE(message.find(dataset), std::string::npos) << message;
+        }
     }
 }
 
