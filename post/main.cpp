@@ -127,7 +127,7 @@ std::vector<std::size_t> nearestSnapshots(const std::vector<double>& times,
 void renderPictures(const std::vector<std::string>& pictured, bool final, const std::string& field,
                     const fs::path& runDir, const fs::path& out, const std::vector<int>& size) {
     for (const std::string& file : pictured) {
-        const gsph::Snapshot snap = gsph::readSnapshot(file);
+        const gsph::Snapshot snap = gsph::readSnapshotIsolated(file);
         const std::string stem = fs::path(file).stem().string();
         const fs::path picture =
             out / (final ? "final_" + field + ".png"
@@ -223,7 +223,7 @@ int main(int argc, char** argv) {
         gsph::Snapshot last;
         for (std::size_t k = 0; k < snapshots.size(); ++k) {
             const fs::path& p = snapshots[k];
-            gsph::Snapshot snap = gsph::readSnapshot(p);
+            gsph::Snapshot snap = gsph::readSnapshotIsolated(p);
             if (k > 0 && snap.size() != last.size())
                 throw gsph::InputError(p.string() + ": " + std::to_string(snap.size()) +
                                        " particles, the run's first snapshot has " +

@@ -46,6 +46,12 @@ bool writeAll(int fd, const std::string& bytes) {
 
 }  // namespace
 
+unsigned fileReadDeadline(const std::filesystem::path& path) {
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(path, ec);
+    return 60u + (ec ? 0u : static_cast<unsigned>(size / 20000000u));
+}
+
 std::string runInChild(const std::string& source, const std::string& what,
                        const std::function<void(ByteWriter&)>& work,
                        const std::function<void(const std::string& reason)>& crashed,

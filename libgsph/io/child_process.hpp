@@ -10,12 +10,13 @@
 // ends without an answer calls `crashed(reason)` ("signal 11, Segmentation fault"), which
 // throws the caller's error (else Error "<source>: <what> crashed (reason)" is thrown). Only
 // for processes that have not started OpenMP threads yet (a fork copies only the caller's
-// thread). The byte stream holds plain values, strings and vectors of trivially copyable
-// elements (and Vec3), native layout: parent and child are the same program.
+// thread; the work must not use threads). The byte stream holds plain values, strings and vectors
+// of trivially copyable elements (and Vec3), native layout: parent and child are the same program.
 #pragma once
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <type_traits>
@@ -27,7 +28,8 @@
 namespace gsph {
 
 template <class T>
-constexpr bool kRawBytes = std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec3>;
+constexpr bool kRawBytes =
+    std::is_trivially_copyable_v<T> || std::is_same_v<T, Vec3> || std::is_same_v<T, Mat3>;
 
 class ByteWriter {
   public:
@@ -45,6 +47,10 @@ class ByteWriter {
         static_assert(kRawBytes<T>);
         value<std::uint64_t>(v.size());
         bytes_.append(reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T));
+    }
+    void texts(const std::vector<std::string>& v) {
+        value<std::uint64_t>(v.size());
+        for (const std::string& s : v) text(s);
     }
     const std::string& bytes() const { return bytes_; }
 
@@ -76,6 +82,12 @@ class ByteReader {
         take(v.data(), v.size() * sizeof(T));
         return v;
     }
+    const std::string& source() const { return source_; }
+    std::vector<std::string> texts() {
+        std::vector<std::string> v(count(sizeof(std::uint64_t)));  // each at least its length
+        for (std::string& s : v) s = text();
+        return v;
+    }
 
   private:
     std::size_t count(std::size_t elementSize) {
@@ -95,6 +107,10 @@ class ByteReader {
     std::string source_;
     std::size_t at_ = 0;
 };
+
+/// Time a sound file of the size of `path` needs at most to be read in a child: 60 s, and 1 s
+/// per 20 MB (a particle file of 10e6 particles, about 1 GB, reads in 5 s here).
+unsigned fileReadDeadline(const std::filesystem::path& path);
 
 /// Runs `work` in a child process (see the header comment); returns what it wrote. `what`
 /// names the work in messages ("gmsh", "the particle-file reader").

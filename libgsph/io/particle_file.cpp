@@ -431,29 +431,6 @@ Reference buildReference(const ParticleFile& f, std::span<const double> densityP
     return ref;
 }
 
-namespace {
-
-void writeStrings(ByteWriter& w, const std::vector<std::string>& texts) {
-    w.value<std::uint64_t>(texts.size());
-    for (const std::string& t : texts) w.text(t);
-}
-
-// Time a sound particle file needs at most to be read: 60 s, and 1 s per 20 MB (10e6
-// particles, about 1 GB, read in 5 s here).
-unsigned readDeadline(const std::filesystem::path& path) {
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(path, ec);
-    return 60u + (ec ? 0u : static_cast<unsigned>(size / 20000000u));
-}
-
-std::vector<std::string> readStrings(ByteReader& r) {
-    std::vector<std::string> texts(r.value<std::uint64_t>());
-    for (std::string& t : texts) t = r.text();
-    return texts;
-}
-
-}  // namespace
-
 ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigned deadlineSeconds) {
     const std::string source = path.string();
     const std::string bytes = runInChild(
@@ -483,15 +460,13 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
                 w.text(name);
                 w.array(members);
             }
-            const Provenance& p = f.provenance;
-            writeStrings(
-                w, {p.tool, p.toolVersion, p.sourceFile, p.sourceSha256, p.parameters, p.units});
+            writeProvenance(w, f.provenance);
         },
         [&](const std::string& reason) {
             throw IoError(source + ": the file crashed or hung HDF5's reader (" + reason +
                           "): it is damaged or not a particle file");
         },
-        deadlineSeconds > 0 ? deadlineSeconds : readDeadline(path));
+        deadlineSeconds > 0 ? deadlineSeconds : fileReadDeadline(path));
     ByteReader r(bytes, source);
     ParticleFile f;
     f.X = r.array<Vec3>();
@@ -517,9 +492,7 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
         std::string name = r.text();
         f.sets[name] = r.array<Index>();
     }
-    const std::vector<std::string> p = readStrings(r);
-    if (p.size() != 6) throw IoError(source + ": the particle-file reader sent a bad answer");
-    f.provenance = {p[0], p[1], p[2], p[3], p[4], p[5]};
+    f.provenance = readProvenance(r);
     return f;
 }
 

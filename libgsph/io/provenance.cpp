@@ -28,6 +28,16 @@ void writeProvenance(h5::File& file, const Provenance& p) {
     file.setAttribute("/", "units", p.units);
 }
 
+void writeProvenance(ByteWriter& w, const Provenance& p) {
+    w.texts({p.tool, p.toolVersion, p.sourceFile, p.sourceSha256, p.parameters, p.units});
+}
+
+Provenance readProvenance(ByteReader& r) {
+    const std::vector<std::string> p = r.texts();
+    if (p.size() != 6) throw IoError(r.source() + ": the reading process sent a bad answer");
+    return {p[0], p[1], p[2], p[3], p[4], p[5]};
+}
+
 Provenance readProvenance(const h5::File& file) {
     auto get = [&](const char* name) {
         return file.hasAttribute("/", name) ? file.stringAttribute("/", name) : std::string();

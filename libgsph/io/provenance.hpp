@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "io/child_process.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace gsph {
@@ -29,6 +30,10 @@ Provenance provenanceOf(const std::string& tool, const std::string& toolVersion,
 void writeProvenance(h5::File& file, const Provenance& provenance);
 /// Reads them back; missing attributes stay empty (units default "SI" only if written so).
 Provenance readProvenance(const h5::File& file);
+
+/// The six strings through a child process's byte stream (io/child_process.hpp).
+void writeProvenance(ByteWriter& w, const Provenance& provenance);
+Provenance readProvenance(ByteReader& r);
 
 /// Root attributes format, format_version_major, format_version_minor (snapshots, checkpoints).
 void writeFormatVersion(h5::File& file, const std::string& format, int major, int minor);

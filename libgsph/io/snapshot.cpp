@@ -6,6 +6,7 @@
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
+#include "io/child_process.hpp"
 #include "io/hdf5_file.hpp"
 
 namespace gsph {
@@ -173,6 +174,57 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
                 throw IoError(path.string() + ": /bonds/broken names particle " +
                               std::to_string(a) + " outside [0, " + std::to_string(n) + ")");
     }
+    return s;
+}
+
+Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadlineSeconds) {
+    const std::string source = path.string();
+    const std::string bytes = runInChild(
+        source, "the snapshot reader",
+        [&](ByteWriter& w) {
+            const Snapshot s = readSnapshot(path);
+            w.value(s.time);
+            w.value(s.step);
+            w.array(s.X);
+            w.array(s.x);
+            w.array(s.v);
+            w.array(s.stress);
+            w.array(s.F);
+            w.array(s.volume);
+            w.array(s.body);
+            w.array(s.space);
+            w.array(s.plasticStrain);
+            w.array(s.temperature);
+            w.array(s.damage);
+            w.array(s.transient);
+            w.array(s.bondDamage);
+            w.array(s.brokenBonds);
+            writeProvenance(w, s.provenance);
+        },
+        [&](const std::string& reason) {
+            throw IoError(source + ": the file crashed or hung HDF5's reader (" + reason +
+                          "): it is damaged or not a snapshot");
+        },
+        deadlineSeconds > 0 ? deadlineSeconds : fileReadDeadline(path));
+    ByteReader r(bytes, source);
+    Snapshot s;
+    s.time = r.value<double>();
+    s.step = r.value<long>();
+    s.X = r.array<Vec3>();
+    s.x = r.array<Vec3>();
+    s.v = r.array<Vec3>();
+    s.stress = r.array<Mat3>();
+    s.F = r.array<Mat3>();
+    s.volume = r.array<double>();
+    s.body = r.array<Index>();
+    s.space = r.array<Index>();
+    s.plasticStrain = r.array<double>();
+    s.temperature = r.array<double>();
+    s.damage = r.array<double>();
+    s.transient = r.array<std::uint8_t>();
+    s.bondDamage = r.array<double>();
+    s.brokenBonds = r.array<std::array<Index, 2>>();
+    s.provenance = readProvenance(r);
     return s;
 }
 

@@ -73,4 +73,10 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
 /// major version, or inconsistent.
 Snapshot readSnapshot(const std::filesystem::path& path);
 
+/// readSnapshot in a child process (io/child_process.hpp), as readParticleFileIsolated: a damaged
+/// or crafted file that crashes or hangs HDF5's own parser (`deadlineSeconds`, 0: 60 s plus 1 s
+/// per 20 MB) is an IoError naming the file instead of a crash of the caller. Same results and
+/// errors otherwise. The caller's threads may run; the child uses none.
+Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadlineSeconds = 0);
+
 }  // namespace gsph

@@ -362,5 +362,28 @@ TEST(PostDurability, BadOptionsAndUnwritableOutputsAreOneLineErrors) {
         << unwritable.err;
 }
 
+TEST(PostDurability, SnapshotsThatFaultInsideHdf5AreOneLineErrors) {
+    // A run folder whose second snapshot is one of the fuzzers' files that fault inside HDF5
+    // 1.10.8's own parser (tests/fuzz/third_party_findings): gsph-post reads snapshots in a
+    // child process; each is one line naming the file, exit status 1.
+    TempDir dir;
+    ASSERT_EQ(test::makeSampleParticles(dir / "particles.h5").status, 0);
+    ASSERT_EQ(test::runSampleCase(dir / "particles.h5", dir / "run").status, 0);
+    std::vector<fs::path> snapshots;
+    for (const auto& e : fs::directory_iterator(dir / "run"))
+        if (e.path().filename().string().rfind("snapshot_", 0) == 0) snapshots.push_back(e.path());
+    std::sort(snapshots.begin(), snapshots.end());
+    ASSERT_GE(snapshots.size(), 2u);
+    for (const char* name : {"hdf5_H5HG_read_segv.h5", "hdf5_H5C_protect_allocation_too_big.h5",
+                             "hdf5_H5O_msg_iterate_heap_overflow.h5"}) {
+        fs::copy_file(test::kSourceDir / "tests/fuzz/third_party_findings" / name, snapshots[1],
+                      fs::copy_options::overwrite_existing);
+        const auto r = runCommand(kPost + " " + quote((dir / "run").string()) + " --no-pictures");
+        EXPECT_EQ(r.status, kExitError) << name << ": " << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(snapshots[1].string() + ": "), std::string::npos) << r.err;
+    }
+}
+
 }  // namespace
 }  // namespace gsph

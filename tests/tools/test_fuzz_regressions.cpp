@@ -14,6 +14,7 @@
 
 #include "core/error.hpp"
 #include "fuzz/entry_points.hpp"
+#include "io/snapshot.hpp"
 #include "temp_dir.hpp"
 
 namespace gsph {
@@ -114,6 +115,23 @@ TEST(FuzzRegressions, SpaceCellsThatDisagreeWithTheParticlesAreRefused) {
 // dataset.
 TEST(FuzzRegressions, DataspaceLargerThanItsStorageIsRefused) {
     expectRefusedNaming("corrupt_dataspace_spaces_dtheta.h5", "/spaces/dtheta");
+}
+
+// The fuzzers' file on which HDF5 1.10.8 never returns (tests/fuzz/third_party_findings), read
+// as a snapshot in a child process with a deadline of 2 s: an IoError naming the file and the
+// alarm, and the caller goes on.
+TEST(ThirdPartyFindings, ASnapshotThatHangsHdf5IsStoppedByTheDeadline) {
+    const std::filesystem::path hang =
+        std::filesystem::path(GSPH_SOURCE_DIR) /
+        "tests/fuzz/third_party_findings/hdf5_H5C_protect_timeout.h5";
+    try {
+        (void)readSnapshotIsolated(hang, 2);
+        FAIL() << "read";
+    } catch (const IoError& e) {
+        EXPECT_EQ(std::string(e.what()), hang.string() +
+                                             ": the file crashed or hung HDF5's reader (signal "
+                                             "14, Alarm clock): it is damaged or not a snapshot");
+    }
 }
 
 }  // namespace
