@@ -8,10 +8,11 @@
 // (InputError, MeshError, IoError, NumericalError as Error, any other exception as Error) and
 // message; a child killed by a signal (SIGSEGV, SIGABRT, the out-of-memory killer) or one that
 // ends without an answer calls `crashed(reason)` ("signal 11, Segmentation fault"), which
-// throws the caller's error (else Error "<source>: <what> crashed (reason)" is thrown). Only
-// for processes that have not started OpenMP threads yet (a fork copies only the caller's
-// thread; the work must not use threads). The byte stream holds plain values, strings and vectors
-// of trivially copyable elements (and Vec3), native layout: parent and child are the same program.
+// throws the caller's error (else Error "<source>: <what> crashed (reason)" is thrown). A fork
+// copies only the caller's thread: the work must not use threads (OpenMP included) nor locks
+// that the caller's other threads may hold. The byte stream holds plain values, strings and
+// vectors of trivially copyable elements (and Vec3, Mat3), native layout: parent and child are
+// the same program.
 #pragma once
 
 #include <cstdint>

@@ -73,9 +73,9 @@ ParticleFile readParticleFile(const std::filesystem::path& path);
 
 /// readParticleFile in a child process (io/child_process.hpp): a damaged or crafted file that
 /// crashes HDF5's own parser (tests/fuzz/third_party_findings) is an IoError naming the file
-/// and the signal instead of a crash of the caller. Same results and errors otherwise. For
-/// tools, before they start threads. A reader that takes longer than `deadlineSeconds` (0: 60 s
-/// plus 1 s per 20 MB of file) is stopped: an IoError too (HDF5 loops on some damaged files).
+/// and the signal instead of a crash of the caller. Same results and errors otherwise. A reader
+/// that takes longer than `deadlineSeconds` (0: 60 s plus 1 s per 20 MB of file) is stopped: an
+/// IoError too (HDF5 loops on some damaged files).
 ParticleFile readParticleFileIsolated(const std::filesystem::path& path,
                                       unsigned deadlineSeconds = 0);
 
