@@ -6,15 +6,14 @@
 
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
-#include "spaces/metric.hpp"
+#include "reference/reference_builder.hpp"
 
 namespace gsph {
 
 Simulation::Simulation(Reference ref, std::vector<Material> materialsByBody, SolverOptions options,
                        SearchMethod search)
     : ref_(std::move(ref)), materials_(std::move(materialsByBody)), options_(options) {
-    if (ref_.pairs.particles() != ref_.size()) buildPairs(ref_, search);
-    if (ref_.G.size() != ref_.X.size()) computeGeometry(ref_);
+    completeReference(ref_, search);
     // Bodies are contiguous ranges (Reference invariant, checked by buildPairs).
     for (Index a = 0; a < ref_.size();) {
         const Index id = ref_.body[static_cast<std::size_t>(a)];
@@ -67,6 +66,12 @@ void Simulation::addWall(Wall wall) {
     walls_.push_back(std::move(wall));
 }
 
+void Simulation::addStage(std::shared_ptr<ForceStage> stage) {
+    if (integrator_) throw Error("force stages must be added before the first step");
+    if (!stage) throw Error("addStage: no stage");
+    stages_.push_back(std::move(stage));
+}
+
 std::vector<Vec3> Simulation::wallForces() const {
     return integrator_ ? state_.wallForce : std::vector<Vec3>{};
 }
@@ -74,8 +79,8 @@ std::vector<Vec3> Simulation::wallForces() const {
 // The one place the integrator is built: a fresh start and a resumed run see the same
 // constraints, loads and walls.
 void Simulation::makeIntegrator() {
-    integrator_ =
-        std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_, walls_);
+    integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_,
+                                                   walls_, stages_);
 }
 
 void Simulation::start() {

@@ -46,6 +46,10 @@ class Simulation {
     /// A total force on a particle set, shared by mass (boundary/loads.hpp).
     void applyForce(SetForce force);
     void addWall(Wall wall);
+    /// A force term beyond those the library composes itself (forces/force_stage.hpp); stages
+    /// add their forces after the internal force, contact, walls and constant loads, in the
+    /// order added.
+    void addStage(std::shared_ptr<ForceStage> stage);
 
     /// Computes the initial accelerations and time step; called by the first step if needed.
     void start();
@@ -82,6 +86,7 @@ class Simulation {
     std::vector<VelocityConstraint> constraints_;
     Loads loads_;
     std::vector<Wall> walls_;
+    std::vector<std::shared_ptr<ForceStage>> stages_;
     State state_;
     std::unique_ptr<VelocityVerlet> integrator_;
 };

@@ -111,7 +111,7 @@ void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
                const std::vector<Index>& particleOfHex, Conversion& out) {
     for (const SurfaceGroup& g : mesh.surfaceGroups) {
         const std::string name = particleSetName(mesh, g, out.particles);
-        std::vector<Index>& members = out.particles.sets[name];
+        std::vector<std::pair<Index, Vec3>> pieces;
         for (const auto& quad : g.quads) {
             std::array<Index, 2> found{};
             const int n = adjacency.hexesWithFace(quad, -1, found);
@@ -120,16 +120,17 @@ void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
                                 "' has a quadrilateral that is not a face of any hexahedron");
             }
             for (int k = 0; k < std::min(n, 2); ++k) {
-                if (particleOfHex[found[k]] >= 0) members.push_back(particleOfHex[found[k]]);
+                const Index particle = particleOfHex[found[k]];
+                if (particle < 0) continue;
+                HexCorners x;
+                for (int c = 0; c < 8; ++c) x[c] = mesh.nodes[mesh.hexes[found[k]][kGmshCorner[c]]];
+                pieces.emplace_back(
+                    particle,
+                    outwardQuadArea(mesh.nodes[quad[0]], mesh.nodes[quad[1]], mesh.nodes[quad[2]],
+                                    mesh.nodes[quad[3]], hexCentre(x)));
             }
         }
-        std::sort(members.begin(), members.end());
-        members.erase(std::unique(members.begin(), members.end()), members.end());
-        if (members.empty()) {
-            out.warnings.push_back("particle set '" + name +
-                                   "' is empty (its surfaces hold no quadrilaterals, or hole "
-                                   "cutting removed all its particles)");
-        }
+        storeParticleSet(name, std::move(pieces), out);
     }
 }
 
@@ -307,6 +308,26 @@ void reportMetric(const Assembly& as, Conversion& out) {
 }
 
 }  // namespace
+
+void storeParticleSet(const std::string& name, std::vector<std::pair<Index, Vec3>> pieces,
+                      Conversion& out) {
+    std::sort(pieces.begin(), pieces.end(),
+              [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<Index>& members = out.particles.sets[name];
+    std::vector<Vec3>& areas = out.particles.setAreas[name];
+    for (const auto& [particle, area] : pieces) {
+        if (members.empty() || members.back() != particle) {
+            members.push_back(particle);
+            areas.push_back(Vec3::Zero());
+        }
+        areas.back() += area;
+    }
+    if (members.empty()) {
+        out.warnings.push_back("particle set '" + name +
+                               "' is empty (its surfaces hold no quadrilaterals, or hole "
+                               "cutting removed all its particles)");
+    }
+}
 
 std::string particleSetName(const HexMesh& mesh, const SurfaceGroup& group,
                             const ParticleFile& particles) {

@@ -95,4 +95,10 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options 
 std::string particleSetName(const HexMesh& mesh, const SurfaceGroup& group,
                             const ParticleFile& particles);
 
+/// Stores set `name` from its (particle, outward face area) pieces, in any order and with
+/// repeats: the set's sorted, unique indices and each one's summed area (ParticleFile::setAreas).
+/// An empty set is stored empty, with a warning.
+void storeParticleSet(const std::string& name, std::vector<std::pair<Index, Vec3>> pieces,
+                      Conversion& out);
+
 }  // namespace gsph::preproc

@@ -14,6 +14,13 @@ Vec3 hexCentre(const HexCorners& x) {
     return sum / 8.0;
 }
 
+Vec3 outwardQuadArea(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
+                     const Vec3& inside) {
+    const Vec3 area = 0.5 * (p2 - p0).cross(p3 - p1);
+    const Vec3 centre = 0.25 * (p0 + p1 + p2 + p3);
+    return area.dot(centre - inside) < 0.0 ? Vec3(-area) : area;
+}
+
 Vec3 hexPoint(const HexCorners& x, const Vec3& xi) {
     Vec3 sum = Vec3::Zero();
     for (int c = 0; c < 8; ++c) {

@@ -19,6 +19,11 @@ using HexCorners = std::array<Vec3, 8>;
 /// X(ξ = 0): the particle position of DESIGN §2 (the parametric centre of the hex).
 Vec3 hexCentre(const HexCorners& x);
 
+/// The vector area of the bilinear quadrilateral p0 p1 p2 p3 (corners in a cycle), ½ (p2 − p0) ×
+/// (p3 − p1) (exact for a bilinear face), turned to point away from `inside` [m²].
+Vec3 outwardQuadArea(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3,
+                     const Vec3& inside);
+
 /// X(ξ) = Σ_c N_c(ξ) X_c; ξ may lie outside [−1,1]³ (the hex's polynomial, extended).
 Vec3 hexPoint(const HexCorners& x, const Vec3& xi);
 

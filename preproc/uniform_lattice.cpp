@@ -79,7 +79,7 @@ void buildLatticeSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
     ParticleFile& pf = out.particles;
     for (const SurfaceGroup& g : mesh.surfaceGroups) {
         const std::string name = particleSetName(mesh, g, pf);
-        std::vector<Index>& members = pf.sets[name];
+        std::vector<std::pair<Index, Vec3>> pieces;
         for (const auto& quad : g.quads) {
             std::array<Index, 2> found{};
             if (adjacency.hexesWithFace(quad, -1, found) == 0) {
@@ -100,6 +100,8 @@ void buildLatticeSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
             const double size =
                 std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p3 - p2).norm(), (p0 - p3).norm()});
             const int samples = std::max(1, static_cast<int>(std::ceil(2.0 * size / hMin)));
+            // Each sample point carries its share of the face's area to the particle it finds.
+            const Vec3 share = outwardQuadArea(p0, p1, p2, p3, inside) / (samples * samples);
             for (int it = 0; it < samples; ++it) {
                 for (int is = 0; is < samples; ++is) {
                     const double s = (is + 0.5) / samples, t = (it + 0.5) / samples;
@@ -108,16 +110,11 @@ void buildLatticeSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
                     // Nudged into the face's hex: a face on a cell boundary picks the body side.
                     const Vec3 point = onFace + 1e-6 * (inside - onFace);
                     const Index p = nearestParticle(lat, pf.X, point);
-                    if (p >= 0) members.push_back(p);
+                    if (p >= 0) pieces.emplace_back(p, share);
                 }
             }
         }
-        std::sort(members.begin(), members.end());
-        members.erase(std::unique(members.begin(), members.end()), members.end());
-        if (members.empty()) {
-            out.warnings.push_back("particle set '" + name +
-                                   "' is empty (its surfaces hold no quadrilaterals)");
-        }
+        storeParticleSet(name, std::move(pieces), out);
     }
 }
 

@@ -5,100 +5,15 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 
 #include "core/error.hpp"
 #include "history.hpp"  // columnName: each wall its own columns
+#include "toml_keys.hpp"
 
 namespace gsph::solver {
 namespace {
 
-// Reads one TOML table. Unknown keys are reported first (a misspelt key must not surface as
-// "missing key" of its correct spelling).
-class TableReader {
-  public:
-    TableReader(const std::string& file, const toml::table& table, std::string where,
-                std::initializer_list<const char*> allowed)
-        : file_(file), table_(table), where_(std::move(where)) {
-        for (const auto& [key, node] : table_) {
-            const std::string k(key.str());
-            if (std::none_of(allowed.begin(), allowed.end(), [&](const char* a) { return k == a; }))
-                fail(&node, "unknown key '" + k + "' in " + where_);
-        }
-    }
-
-    [[noreturn]] void fail(const toml::node* node, const std::string& what) const {
-        const int line = node ? static_cast<int>(node->source().begin.line)
-                              : static_cast<int>(table_.source().begin.line);
-        throw InputError(file_ + ":" + std::to_string(line) + ": " + what);
-    }
-
-    int line() const { return static_cast<int>(table_.source().begin.line); }
-
-    double number(const std::string& key, double fallback, bool required, bool positive) {
-        const toml::node* n = table_.get(key);
-        if (!n) {
-            if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
-            return fallback;
-        }
-        const std::optional<double> v = n->value<double>();
-        if (!v || !std::isfinite(*v)) fail(n, "'" + key + "' in " + where_ + " must be a number");
-        if (positive && !(*v > 0.0)) fail(n, "'" + key + "' in " + where_ + " must be > 0");
-        if (!positive && *v < 0.0) fail(n, "'" + key + "' in " + where_ + " must be ≥ 0");
-        return *v;
-    }
-
-    std::string text(const std::string& key, const std::string& fallback, bool required) {
-        const toml::node* n = table_.get(key);
-        if (!n) {
-            if (required) fail(nullptr, "missing key '" + key + "' in " + where_);
-            return fallback;
-        }
-        // is_integer first: toml++'s value<int64_t>() of a float such as 5e66 converts it to
-        // int64 before the range check (undefined behaviour).
-        if (n->is_integer()) return std::to_string(*n->value<std::int64_t>());
-        const std::optional<std::string> v = n->value<std::string>();
-        if (!v || v->empty()) fail(n, "'" + key + "' in " + where_ + " must be a non-empty string");
-        return *v;
-    }
-
-    bool flag(const std::string& key, bool fallback) {
-        const toml::node* n = table_.get(key);
-        if (!n) return fallback;
-        const std::optional<bool> v = n->value<bool>();
-        if (!v) fail(n, "'" + key + "' in " + where_ + " must be true or false");
-        return *v;
-    }
-
-    bool has(const std::string& key) const { return table_.get(key) != nullptr; }
-
-    /// A list of `size` numbers.
-    std::vector<double> numbers(const std::string& key, std::size_t size) {
-        const toml::node* n = table_.get(key);
-        const toml::array* arr = n ? n->as_array() : nullptr;
-        if (!arr || arr->size() != size)
-            fail(n, "'" + key + "' in " + where_ + " must be a list of " + std::to_string(size) +
-                        " numbers");
-        std::vector<double> out;
-        for (const toml::node& e : *arr) {
-            const std::optional<double> v = e.value<double>();
-            if (!v || !std::isfinite(*v))
-                fail(&e, "'" + key + "' in " + where_ + " must hold numbers");
-            out.push_back(*v);
-        }
-        return out;
-    }
-
-    Vec3 vector(const std::string& key) {
-        const std::vector<double> v = numbers(key, 3);
-        return Vec3(v[0], v[1], v[2]);
-    }
-
-  private:
-    std::string file_;
-    const toml::table& table_;
-    std::string where_;
-};
+using Sign = TomlKeys::Sign;
 
 const toml::array* arrayOfTables(const std::string& file, const toml::table& root,
                                  const std::string& key) {
@@ -114,30 +29,29 @@ const toml::array* arrayOfTables(const std::string& file, const toml::table& roo
 void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const toml::table* run = root["run"].as_table();
     if (!run) throw InputError(file + ":1: missing table [run]");
-    TableReader r(file, *run, "[run]",
-                  {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity",
-                   "hourglass", "checkpoint_interval", "min_dt_ratio", "gravity"});
+    const TomlKeys r(file, *run, "[run]",
+                     {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity",
+                      "hourglass", "checkpoint_interval", "min_dt_ratio", "gravity"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
-    c.particles = r.text("particles", "", true);
+    c.particles = r.text("particles");
     if (c.particles.is_relative()) c.particles = c.caseFile.parent_path() / c.particles;
-    c.endTime = r.number("end_time", 0.0, true, true);
-    c.outputInterval = r.number("output_interval", c.endTime / 10.0, false, true);
-    c.cfl = r.number("cfl", c.cfl, false, true);
-    if (c.cfl > 1.0) r.fail(run->get("cfl"), "'cfl' in [run] must be ≤ 1");
-    c.kappa = r.number("kappa", c.kappa, false, true);
+    c.endTime = r.number("end_time", Sign::Positive);
+    c.outputInterval = r.number("output_interval", c.endTime / 10.0, Sign::Positive);
+    c.cfl = r.number("cfl", c.cfl, Sign::Positive);
+    if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
+    c.kappa = r.number("kappa", c.kappa, Sign::Positive);
     if (r.has("viscosity")) {
         const std::vector<double> beta = r.numbers("viscosity", 2);
-        if (beta[0] < 0.0 || beta[1] < 0.0)
-            r.fail(run->get("viscosity"), "'viscosity' in [run] must be ≥ 0");
+        if (beta[0] < 0.0 || beta[1] < 0.0) r.fail("viscosity", "'viscosity' in [run] must be ≥ 0");
         c.viscosity = {beta[0], beta[1]};
     }
-    c.hourglass = r.number("hourglass", c.hourglass, false, false);
-    c.checkpointInterval = r.number("checkpoint_interval", c.outputInterval, false, false);
-    c.minDtRatio = r.number("min_dt_ratio", c.minDtRatio, false, false);
+    c.hourglass = r.number("hourglass", c.hourglass, Sign::NonNegative);
+    c.checkpointInterval = r.number("checkpoint_interval", c.outputInterval, Sign::NonNegative);
+    c.minDtRatio = r.number("min_dt_ratio", c.minDtRatio, Sign::NonNegative);
     if (c.minDtRatio >= 1.0)
-        r.fail(run->get("min_dt_ratio"), "'min_dt_ratio' in [run] must be < 1 (0 = off)");
+        r.fail("min_dt_ratio", "'min_dt_ratio' in [run] must be < 1 (0 = off)");
     if (r.has("gravity")) c.gravity = r.vector("gravity");
 }
 
@@ -148,22 +62,22 @@ void readContact(const std::string& file, const toml::table& root, CaseConfig& c
     if (!t)
         throw InputError(file + ":" + std::to_string(n->source().begin.line) +
                          ": 'contact' must be a table [contact]");
-    TableReader r(file, *t, "[contact]", {"between_bodies", "penalty", "distance"});
+    const TomlKeys r(file, *t, "[contact]", {"between_bodies", "penalty", "distance"});
     c.contact.betweenBodies = r.flag("between_bodies", c.contact.betweenBodies);
-    c.contact.penalty = r.number("penalty", c.contact.penalty, false, true);
-    c.contact.distance = r.number("distance", c.contact.distance, false, true);
+    c.contact.penalty = r.number("penalty", c.contact.penalty, Sign::Positive);
+    c.contact.distance = r.number("distance", c.contact.distance, Sign::Positive);
 }
 
 WallSpec readWall(const std::string& file, const toml::table& t, std::size_t index) {
-    TableReader r(file, t, "[[wall]]",
-                  {"name", "shape", "point", "normal", "axis", "radius", "velocity", "friction",
-                   "ramp_time"});
+    const TomlKeys r(file, t, "[[wall]]",
+                     {"name", "shape", "point", "normal", "axis", "radius", "velocity", "friction",
+                      "ramp_time"});
     WallSpec w;
     w.line = r.line();
-    w.name = r.text("name", "wall " + std::to_string(index), false);
-    const std::string shape = r.text("shape", "plane", false);
+    w.name = r.text("name", "wall " + std::to_string(index));
+    const std::string shape = r.text("shape", "plane");
     if (shape != "plane" && shape != "cylinder")
-        r.fail(t.get("shape"),
+        r.fail("shape",
                "'shape' in [[wall]] must be \"plane\" or \"cylinder\", got '" + shape + "'");
     w.cylinder = shape == "cylinder";
     // The keys of the other shape are errors, not silently ignored.
@@ -172,69 +86,75 @@ WallSpec readWall(const std::string& file, const toml::table& t, std::size_t ind
                                                    : std::vector<std::string>{"axis", "radius"};
     for (const std::string& key : otherKeys)
         if (r.has(key))
-            r.fail(t.get(key), "'" + key + "' in [[wall]] belongs to shape = \"" +
-                                   (w.cylinder ? "plane" : "cylinder") + "\"");
-    if (!r.has("point")) r.fail(nullptr, "missing key 'point' in [[wall]]");
+            r.fail(key, "'" + key + "' in [[wall]] belongs to shape = \"" +
+                            (w.cylinder ? "plane" : "cylinder") + "\"");
+    if (!r.has("point")) r.fail("", "missing key 'point' in [[wall]]");
     w.point = r.vector("point");
     if (w.cylinder) {
-        if (!r.has("axis"))
-            r.fail(nullptr, "missing key 'axis' in [[wall]] (shape = \"cylinder\")");
+        if (!r.has("axis")) r.fail("", "missing key 'axis' in [[wall]] (shape = \"cylinder\")");
         w.axis = r.vector("axis");
-        if (w.axis.isZero(0.0)) r.fail(t.get("axis"), "'axis' in [[wall]] must not be zero");
-        w.radius = r.number("radius", 0.0, true, true);
+        if (w.axis.isZero(0.0)) r.fail("axis", "'axis' in [[wall]] must not be zero");
+        w.radius = r.number("radius", Sign::Positive);
     } else {
-        if (!r.has("normal")) r.fail(nullptr, "missing key 'normal' in [[wall]]");
+        if (!r.has("normal")) r.fail("", "missing key 'normal' in [[wall]]");
         w.normal = r.vector("normal");
-        if (w.normal.isZero(0.0)) r.fail(t.get("normal"), "'normal' in [[wall]] must not be zero");
+        if (w.normal.isZero(0.0)) r.fail("normal", "'normal' in [[wall]] must not be zero");
     }
     if (r.has("velocity")) w.velocity = r.vector("velocity");
-    w.friction = r.number("friction", 0.0, false, false);
-    w.rampTime = r.number("ramp_time", 0.0, false, false);
+    w.friction = r.number("friction", 0.0, Sign::NonNegative);
+    w.rampTime = r.number("ramp_time", 0.0, Sign::NonNegative);
     return w;
 }
 
 SetSpec readSet(const std::string& file, const toml::table& t) {
-    TableReader r(file, t, "[[set]]", {"name", "fixed", "velocity", "force"});
+    const TomlKeys r(file, t, "[[set]]", {"name", "fixed", "velocity", "force", "pressure"});
     SetSpec s;
     s.line = r.line();
-    s.name = r.text("name", "", true);
+    s.name = r.text("name");
     s.fixed = r.flag("fixed", false);
     if (r.has("force") && (s.fixed || r.has("velocity")))
-        r.fail(t.get("force"), "set '" + s.name +
-                                   "' has a 'force' and a kinematic condition (fixed or "
-                                   "velocity): give one of the three");
+        r.fail("force", "set '" + s.name +
+                            "' has a 'force' and a kinematic condition (fixed or "
+                            "velocity): give one of the three");
+    if (r.has("pressure") && (s.fixed || r.has("velocity") || r.has("force")))
+        r.fail("pressure", "set '" + s.name +
+                               "' has a 'pressure' and another condition (fixed, velocity "
+                               "or force): give one");
     if (r.has("velocity")) {
-        if (s.fixed)
-            r.fail(t.get("velocity"), "set '" + s.name + "' is both fixed and given a velocity");
+        if (s.fixed) r.fail("velocity", "set '" + s.name + "' is both fixed and given a velocity");
         s.kind = SetSpec::Kind::Velocity;
         s.velocity = r.vector("velocity");
     } else if (r.has("force")) {
         s.kind = SetSpec::Kind::Force;
         s.force = r.vector("force");
+    } else if (r.has("pressure")) {
+        s.kind = SetSpec::Kind::Pressure;
+        s.pressure = r.curve("pressure");
     } else if (!s.fixed) {
-        r.fail(nullptr, "set '" + s.name + "' needs 'fixed = true', a 'velocity' or a 'force'");
+        r.fail("", "set '" + s.name +
+                       "' needs 'fixed = true', a 'velocity', a 'force' or a 'pressure'");
     }
     return s;
 }
 
 PrecrackSpec readPrecrack(const std::string& file, const toml::table& t, std::size_t index) {
-    TableReader r(file, t, "[[precrack]]", {"name", "corner", "edge1", "edge2"});
+    const TomlKeys r(file, t, "[[precrack]]", {"name", "corner", "edge1", "edge2"});
     PrecrackSpec p;
     p.line = r.line();
-    p.name = r.text("name", "precrack " + std::to_string(index), false);
+    p.name = r.text("name", "precrack " + std::to_string(index));
     for (const char* key : {"corner", "edge1", "edge2"})
-        if (!r.has(key)) r.fail(nullptr, std::string("missing key '") + key + "' in [[precrack]]");
+        if (!r.has(key)) r.fail("", std::string("missing key '") + key + "' in [[precrack]]");
     p.corner = r.vector("corner");
     p.edge1 = r.vector("edge1");
     p.edge2 = r.vector("edge2");
     for (const char* key : {"edge1", "edge2"})
         if ((std::string(key) == "edge1" ? p.edge1 : p.edge2).isZero(0.0))
-            r.fail(t.get(key), std::string("'") + key + "' in [[precrack]] must not be zero");
+            r.fail(key, std::string("'") + key + "' in [[precrack]] must not be zero");
     // Parallel edges span no plane (relative to the edges' lengths, so units do not matter).
     if (p.edge1.cross(p.edge2).norm() <= 1e-9 * p.edge1.norm() * p.edge2.norm())
-        r.fail(t.get("edge2"), "'edge1' and 'edge2' in [[precrack]] '" + p.name +
-                                   "' are parallel: they must "
-                                   "span the crack's plane");
+        r.fail("edge2", "'edge1' and 'edge2' in [[precrack]] '" + p.name +
+                            "' are parallel: they must "
+                            "span the crack's plane");
     return p;
 }
 
@@ -243,13 +163,7 @@ PrecrackSpec readPrecrack(const std::string& file, const toml::table& t, std::si
 CaseConfig readCaseFile(const std::filesystem::path& path) {
     const std::string file = path.string();
     if (!std::filesystem::exists(path)) throw InputError(file + ": no such case file");
-    toml::table root;
-    try {
-        root = toml::parse_file(file);
-    } catch (const toml::parse_error& e) {
-        throw InputError(file + ":" + std::to_string(e.source().begin.line) + ": " +
-                         std::string(e.description()));
-    }
+    const toml::table root = parseTomlFile(file);
     CaseConfig c;
     c.caseFile = path;
     for (const auto& [key, node] : root) {
@@ -288,35 +202,34 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
 
     if (const toml::array* bodies = arrayOfTables(file, root, "body"))
         for (const toml::node& n : *bodies) {
-            TableReader r(file, *n.as_table(), "[[body]]",
-                          {"group", "material", "velocity", "failed_bonds"});
+            const TomlKeys r(file, *n.as_table(), "[[body]]",
+                             {"group", "material", "velocity", "failed_bonds"});
             BodySpec b;
             b.line = r.line();
-            b.group = r.text("group", "", true);
-            b.material = r.text("material", "", true);
+            b.group = r.text("group");
+            b.material = r.text("material");
             const MaterialSpec* material = nullptr;
             for (const MaterialSpec& m : c.materials)
                 if (m.name == b.material) material = &m;
             if (material == nullptr)
-                r.fail(n.as_table()->get("material"),
-                       "material '" + b.material + "' is not defined");
+                r.fail("material", "material '" + b.material + "' is not defined");
             if (r.has("velocity")) b.velocity = r.vector("velocity");
-            b.failedBonds = r.text("failed_bonds", "keep", false);
+            b.failedBonds = r.text("failed_bonds", "keep");
             if (b.failedBonds != "keep" && b.failedBonds != "either" && b.failedBonds != "both" &&
                 b.failedBonds != "cut")
-                r.fail(n.as_table()->get("failed_bonds"),
+                r.fail("failed_bonds",
                        "'failed_bonds' must be \"keep\", \"either\", \"both\" or \"cut\", got \"" +
                            b.failedBonds + "\"");
             const auto* plastic = std::get_if<JohnsonCook>(&*material->material);
             if (b.failedBonds != "keep" && (plastic == nullptr || !plastic->damage()))
-                r.fail(n.as_table()->get("failed_bonds"),
+                r.fail("failed_bonds",
                        "'failed_bonds' needs a johnson_cook material with damage; material '" +
                            b.material + "' has none");
             for (const BodySpec& other : c.bodies)
                 if (other.group == b.group)
-                    r.fail(n.as_table()->get("group"), "[[body]] group '" + b.group +
-                                                           "' is given twice (also at line " +
-                                                           std::to_string(other.line) + ")");
+                    r.fail("group", "[[body]] group '" + b.group +
+                                        "' is given twice (also at line " +
+                                        std::to_string(other.line) + ")");
             c.bodies.push_back(b);
         }
     if (c.bodies.empty()) throw InputError(file + ": no [[body]] defined");

@@ -27,12 +27,15 @@ struct BodySpec {
 };
 
 struct SetSpec {
-    enum class Kind { Fixed, Velocity, Force };
+    enum class Kind { Fixed, Velocity, Force, Pressure };
     std::string name;  ///< named particle set of the particle file
     Kind kind = Kind::Fixed;
     bool fixed = false;            ///< v = 0
     Vec3 velocity = Vec3::Zero();  ///< prescribed velocity [m/s] (Kind::Velocity)
     Vec3 force = Vec3::Zero();     ///< total force on the set, shared by mass [N] (Kind::Force)
+    /// (t [s], p [Pa]) points of the pressure on the set's faces (Kind::Pressure,
+    /// libgsph/boundary/pressure.hpp); one point: constant.
+    std::vector<std::pair<double, double>> pressure;
     int line = 0;
 };
 

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "boundary/pressure.hpp"
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "history.hpp"
@@ -17,6 +18,7 @@
 #include "io/sha256.hpp"
 #include "io/snapshot.hpp"
 #include "progress.hpp"
+#include "reference/reference_builder.hpp"
 #include "signals.hpp"
 #include "simulation.hpp"
 
@@ -78,10 +80,12 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
     return setup;
 }
 
-// The [[set]] conditions: kinematic ones become constraints, forces become loads.
+// The [[set]] conditions: kinematic ones become constraints, forces become loads, pressures
+// become force stages.
 struct SetConditions {
     std::vector<VelocityConstraint> constraints;
     std::vector<SetForce> forces;
+    std::vector<PressureLoad> pressures;
 };
 
 SetConditions matchSets(const CaseConfig& c, const ParticleFile& file) {
@@ -97,6 +101,16 @@ SetConditions matchSets(const CaseConfig& c, const ParticleFile& file) {
         }
         if (s.kind == SetSpec::Kind::Force) {
             out.forces.push_back({s.name, it->second, s.force});
+            continue;
+        }
+        if (s.kind == SetSpec::Kind::Pressure) {
+            const auto areas = file.setAreas.find(s.name);
+            if (areas == file.setAreas.end())
+                throw InputError(c.caseFile.string() + ":" + std::to_string(s.line) +
+                                 ": a pressure on set '" + s.name + "' needs its face areas, and " +
+                                 c.particles.string() +
+                                 " has none (written by an older gsph-preproc: convert again)");
+            out.pressures.push_back({s.name, it->second, areas->second, s.pressure});
             continue;
         }
         VelocityConstraint vc{s.name, it->second, {}};
@@ -321,6 +335,8 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
                                             std::move(bodies.materials), solverOptions);
     for (VelocityConstraint& vc : sets.constraints) sim->constrain(std::move(vc));
     for (SetForce& f : sets.forces) sim->applyForce(std::move(f));
+    for (PressureLoad& p : sets.pressures)
+        sim->addStage(std::make_shared<PressureStage>(sim->reference(), std::move(p)));
     for (const WallSpec& w : c.walls) sim->addWall(wallOf(w));
     sim->setGravity(c.gravity);
     return sim;

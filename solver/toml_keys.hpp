@@ -1,19 +1,23 @@
 // SPDX-License-Identifier: MIT
-// Typed reading of one TOML table with "FILE:LINE: what" errors (InputError), for the material
-// tables and files (material_config.*) and the material-point path files
-// (material_point_cli.*). Keys are checked against the allowed set first, so a misspelt key is
-// reported as unknown, never as the "missing" key of its correct spelling.
+// Typed reading of one TOML table with "FILE:LINE: what" errors (InputError): the one reader of
+// the case file (case_config.*), the material tables and files (material_config.*) and the
+// material-point path files (material_point_cli.*). Keys are checked against the allowed set
+// first, so a misspelt key is reported as unknown, never as the "missing" key of its correct
+// spelling.
 #pragma once
 
 #include <toml++/toml.h>
 
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/types.hpp"
 
 namespace gsph::solver {
 
@@ -33,6 +37,12 @@ class TomlKeys {
 
     TomlKeys(std::string file, const toml::table& table, std::string where)
         : file_(std::move(file)), table_(table), where_(std::move(where)) {}
+    /// A table that may hold only the `allowed` keys (checked at once).
+    TomlKeys(std::string file, const toml::table& table, std::string where,
+             const std::vector<std::string>& allowed)
+        : TomlKeys(std::move(file), table, std::move(where)) {
+        rejectUnknown(allowed);
+    }
 
     const std::string& file() const { return file_; }
     int line() const { return static_cast<int>(table_.source().begin.line); }
@@ -78,12 +88,28 @@ class TomlKeys {
         return static_cast<long>(*v);
     }
 
+    /// A non-empty string; an integer is taken as its digits (a body named by its id).
     std::string text(const std::string& key, const std::string& fallback) const {
         const toml::node* n = table_.get(key);
         if (!n) return fallback;
+        // is_integer first: toml++'s value<int64_t>() of a float such as 5e66 converts it to
+        // int64 before the range check (undefined behaviour).
+        if (n->is_integer()) return std::to_string(*n->value<std::int64_t>());
         const std::optional<std::string> v = n->value<std::string>();
         if (!v || v->empty())
             fail(key, "'" + key + "' in " + where_ + " must be a non-empty string");
+        return *v;
+    }
+    std::string text(const std::string& key) const {
+        if (!has(key)) fail("", "missing key '" + key + "' in " + where_);
+        return text(key, std::string());
+    }
+
+    bool flag(const std::string& key, bool fallback) const {
+        const toml::node* n = table_.get(key);
+        if (!n) return fallback;
+        const std::optional<bool> v = n->value<bool>();
+        if (!v) fail(key, "'" + key + "' in " + where_ + " must be true or false");
         return *v;
     }
 
@@ -99,6 +125,36 @@ class TomlKeys {
             const std::optional<double> v = e.value<double>();
             if (!v || !std::isfinite(*v)) fail(key, what);
             out.push_back(*v);
+        }
+        return out;
+    }
+
+    Vec3 vector(const std::string& key) const {
+        const std::vector<double> v = numbers(key, 3);
+        return Vec3(v[0], v[1], v[2]);
+    }
+
+    /// A number y (the constant curve [[0, y]]) or a list of [x, y] pairs, x increasing.
+    std::vector<std::pair<double, double>> curve(const std::string& key) const {
+        const toml::node* n = table_.get(key);
+        const std::string what = "'" + key + "' in " + where_;
+        if (n && !n->is_array()) return {{0.0, number(key, Sign::Any)}};
+        const toml::array* arr = n ? n->as_array() : nullptr;
+        if (!arr || arr->empty())
+            fail(key, what + " must be a number or a list of [time, value] pairs");
+        std::vector<std::pair<double, double>> out;
+        for (const toml::node& e : *arr) {
+            const toml::array* pair = e.as_array();
+            std::optional<double> x, y;
+            if (pair && pair->size() == 2) {
+                x = (*pair)[0].value<double>();
+                y = (*pair)[1].value<double>();
+            }
+            if (!x || !y || !std::isfinite(*x) || !std::isfinite(*y))
+                fail(key, what + " must hold [time, value] pairs of numbers");
+            if (!out.empty() && !(*x > out.back().first))
+                fail(key, what + ": the times must increase");
+            out.emplace_back(*x, *y);
         }
         return out;
     }

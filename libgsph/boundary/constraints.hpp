@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Kinematic boundary conditions on particle sets: fixed (v = 0) and prescribed velocity
-// v = v(t, X). The integrator applies them after every kick, so a constrained particle moves
-// exactly with its prescribed velocity; the force it needed is the reaction, whose power the
-// energy ledger books as boundary work.
+// v = v(t, X). The integrator applies the list after every kick, so a constrained particle
+// moves exactly with its prescribed velocity; the force it needed is the reaction, whose power
+// the energy ledger books as boundary work (reactionPower).
 #pragma once
 
 #include <functional>
@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "particles/reference.hpp"
+#include "particles/state.hpp"
 
 namespace gsph {
 
@@ -21,5 +23,19 @@ struct VelocityConstraint {
 
     Vec3 at(double t, const Vec3& X) const { return velocity ? velocity(t, X) : Vec3::Zero(); }
 };
+
+/// Throws InputError naming the constraint if it names a particle outside `ref`.
+void checkConstraints(const std::vector<VelocityConstraint>& constraints, const Reference& ref);
+
+/// v_a = v(t, X_a) for every constrained particle, in the order of the list (a particle in
+/// several sets takes the last one's velocity).
+void applyConstraints(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
+                      State& state, double t);
+
+/// Power of the reactions that keep the constrained particles on their prescribed velocity at
+/// state.time: Σ (m a_prescribed − f)·v, a_prescribed by a central difference of the
+/// prescription, `force` the particles' total force [W]. Fixed sets do no work.
+double reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
+                     const State& state, const std::vector<Vec3>& force);
 
 }  // namespace gsph

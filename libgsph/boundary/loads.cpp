@@ -2,6 +2,7 @@
 #include "boundary/loads.hpp"
 
 #include "core/error.hpp"
+#include "core/parallel.hpp"
 
 namespace gsph {
 
@@ -22,6 +23,15 @@ std::vector<Vec3> loadPerParticle(const Reference& ref, const Loads& loads) {
                 (ref.mass[static_cast<std::size_t>(a)] / mass) * s.total;
     }
     return f;
+}
+
+StageReport ConstantLoadStage::addForces(const State& /*state*/, ForceChannels& out) {
+    parallelFor(static_cast<std::ptrdiff_t>(load_.size()), [&](std::ptrdiff_t a) {
+        const auto ia = static_cast<std::size_t>(a);
+        out.force[ia] += load_[ia];
+        out.external[ia] += load_[ia];
+    });
+    return {};
 }
 
 }  // namespace gsph

@@ -23,6 +23,7 @@
 #include "core/soa_field.hpp"
 #include "failure/brittle_bonds.hpp"
 #include "forces/artificial_viscosity.hpp"
+#include "forces/force_stage.hpp"  // ForceParts
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
 
@@ -61,12 +62,6 @@ struct ForceOptions {
     ViscosityCoefficients viscosity;
     double hourglass = 0.0;      ///< α (0 = off)
     double youngsModulus = 0.0;  ///< E of the body, scales the hourglass penalty [Pa]
-};
-
-/// Per-particle non-conservative forces, kept for the energy ledger.
-struct ForceParts {
-    std::vector<Vec3> viscous;
-    std::vector<Vec3> hourglass;
 };
 
 /// f_c for the particles of one body, partitioned into `blocks` (built from ref.pairs).

@@ -8,32 +8,36 @@
 //      (Johnson–Cook) also advance ε̄p, T, D, e and book their plastic work and the energy
 //      lost by failing particles in the ledger; a particle detached by broken bonds books the
 //      elastic energy its stress held as fracture energy
-//   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m, f = internal force + penalty contact between
-//      bodies + rigid walls (friction from v_{n+½}) + gravity and set forces (contact/,
-//      boundary/loads.hpp)
+//   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m, f the sum of the force stages in their order
+//      (forces/force_stage.hpp): the internal force with viscosity and hourglass control,
+//      penalty contact between bodies, rigid walls (friction from v_{n+½}), gravity and set
+//      forces, then the stages the caller added (addStage)
 //   6. v_{n+1} = v_{n+½} + ½Δt a_{n+1}                   (then constraints at t_{n+1})
-//   7. Δt_{n+1} = CFL · min_a ℓ_a/(c_a + |v_a|), ℓ_a = current particle spacing; a particle in
-//      contact takes CFL / √(((c_a + |v_a|)/ℓ_a)² + ω_a²/4), ω_a its contact frequency bound
+//   7. Δt_{n+1} by integrator/time_step.hpp
+// Steps 3–4 are integrator/stress_update.hpp; the energy ledger is integrator/power_ledger.hpp.
 // On entry `state` holds t_n, x_n, v_n, a_n, F_n, σ_n, Δt_n; on exit the same at n+1.
 // Throws NumericalError (particle, time) on a NaN or an inverted particle (J ≤ 0), and on a
 // collapsed time step (Δt_{n+1} not finite, ≤ 0, or below minTimeStepRatio · Δt_0); the
 // message names the particle (index and reference position X), the time and the fault. The
 // state is then the partially advanced one, for a final diagnostic snapshot.
 // Across steps the integrator keeps nothing the next step reads that the State does not hold
-// (the stress factors, SoA copies and force parts are rebuilt inside every step; the bonds'
+// (the stress factors, SoA copies and force channels are rebuilt inside every step; the bonds'
 // G and detached flags derive from State::bondIntact): resume() continues a checkpointed
-// state bit for bit.
+// state bit for bit, provided the stages keep nothing across steps either.
 #pragma once
 
-#include <cstdint>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "boundary/constraints.hpp"
 #include "boundary/loads.hpp"
-#include "contact/penalty_contact.hpp"
-#include "contact/walls.hpp"
+#include "contact/contact_stages.hpp"
 #include "failure/brittle_bonds.hpp"
+#include "forces/force_stage.hpp"
 #include "forces/internal_force.hpp"
+#include "integrator/body_range.hpp"
+#include "integrator/stress_update.hpp"
 #include "materials/material.hpp"
 #include "particles/reference.hpp"
 #include "particles/state.hpp"
@@ -60,48 +64,26 @@ struct SolverOptions {
     ContactOptions contact;  ///< penalty contact between bodies and with walls
 };
 
-/// Contiguous range of one body and its material.
-struct BodyRange {
-    Index begin = 0, end = 0;
-    const Material* material = nullptr;
-};
-
 /// Wall time spent in each phase of the steps taken so far [s] (for benchmarks and logs).
 struct PhaseTimes {
     double kinematicsAndStress = 0.0;  ///< steps 3–4
-    double forces = 0.0;               ///< step 5 without contact
-    double contact = 0.0;              ///< step 5: contact search and forces, walls, loads
+    double forces = 0.0;               ///< step 5: the internal force stage
+    double contact = 0.0;              ///< step 5: the other stages (contact, walls, loads, …)
     double other = 0.0;                ///< kicks, drift, constraints, energy ledger, Δt
-};
-
-/// Scratch arrays of a step, sized once (no allocation inside the step).
-struct StepWorkspace {
-    StressFactors factors;
-    ParticleFields fields;              ///< SoA x, v, F, X for the pair loops
-    std::vector<StencilBlocks> blocks;  ///< per body: stencil and CSR blocks
-    ForceParts parts;
-    std::vector<Vec3> force;
-    std::vector<double> lengthScale;    ///< current spacing ℓ_a
-    std::vector<std::uint8_t> failure;  ///< per particle: why steps 3–4 failed (0: they did not)
-    /// Per particle, this step's V J Δw_p and failure loss [J] (sized only when a body's model
-    /// tracks a history; summed into the ledger in a fixed order).
-    std::vector<double> plasticWork, damageDissipation;
-    /// Per particle, the elastic energy released when it was detached [J] (sized only when
-    /// bonds can break; written by the detaching step alone, zero before and after it).
-    std::vector<double> fractureEnergy;
-    std::vector<double> partialSums;  ///< scratch of deterministicSum
-    // Contact and loads (sized only when the run has them).
-    std::vector<double> contactFrequency2;  ///< ω_a² bound of the contact springs [1/s²]
-    std::vector<Vec3> externalForce;        ///< loads + wall friction: their power is Σ f·v
-    std::vector<Vec3> wallForce;            ///< the walls' force on each particle [N]
-    void resize(std::size_t n);
 };
 
 class VelocityVerlet {
   public:
+    /// Composes the stages of a run: the internal force, then contact between bodies and walls
+    /// (as options.contact and `walls` ask), then the constant loads, then `extraStages` in
+    /// their order. Throws InputError on bad options, constraints, walls or loads.
     VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
                    std::vector<VelocityConstraint> constraints, SolverOptions options,
-                   const Loads& loads, std::vector<Wall> walls);
+                   const Loads& loads, std::vector<Wall> walls,
+                   std::vector<std::shared_ptr<ForceStage>> extraStages = {});
+    // The stages read the stress update's arrays by reference: the integrator stays in place.
+    VelocityVerlet(const VelocityVerlet&) = delete;
+    VelocityVerlet& operator=(const VelocityVerlet&) = delete;
 
     /// Computes a_n, the stress factors and Δt_n for a state (once, before the first step).
     void initialize(State& state);
@@ -111,37 +93,34 @@ class VelocityVerlet {
     void resume(const State& state);
     void step(State& state);
 
-    const StepWorkspace& workspace() const { return work_; }
     const SolverOptions& options() const { return options_; }
     const PhaseTimes& phaseTimes() const { return times_; }
     const BrittleBonds& bonds() const { return bonds_; }
-    const PenaltyContact& contact() const { return pairContact_; }
-    const RigidWalls& walls() const { return walls_; }
+    const StressUpdate& stressUpdate() const { return stress_; }
+    const ForceChannels& channels() const { return channels_; }
+    /// The stages in the order they add their forces.
+    const std::vector<std::shared_ptr<ForceStage>>& stages() const { return stages_; }
+    /// The stage of type T (the first), or null.
+    template <class T>
+    const T* stage() const {
+        for (const auto& s : stages_)
+            if (const auto* t = dynamic_cast<const T*>(s.get())) return t;
+        return nullptr;
+    }
 
   private:
-    void updateKinematicsAndStress(State& state, double dt, bool atRest);
-    void throwOnFailure(const State& state) const;
-    void packKinematics(const State& state, Index a);
     void computeAccelerations(State& state);
-    void setUpContactAndLoads(const Loads& loads, std::vector<Wall> walls);
-    void addContactAndLoads(State& state);
-    double externalPower(const State& state);
-    void applyConstraints(State& state, double t);
-    double nonConservativePower(const State& state, const std::vector<Vec3>& part);
-    void bookDissipation(State& state);
-    double boundaryPower(const State& state) const;
-    double stableTimeStep(const State& state) const;
 
     const Reference& ref_;
     std::vector<BodyRange> bodies_;
     std::vector<VelocityConstraint> constraints_;
     SolverOptions options_;
     BrittleBonds bonds_;
-    PenaltyContact pairContact_;
-    RigidWalls walls_;
-    std::vector<Vec3> load_;      ///< constant load per particle (empty: none)
-    double wallPushPower_ = 0.0;  ///< Σ f_n·v_wall at the last force evaluation [W]
-    StepWorkspace work_;
+    StressUpdate stress_;
+    std::vector<std::shared_ptr<ForceStage>> stages_;
+    ForceChannels channels_;
+    double stagePower_ = 0.0;  ///< Σ of the stages' external power at the last evaluation [W]
+    std::vector<double> partialSums_;
     PhaseTimes times_;
 };
 

@@ -177,6 +177,15 @@ void validateParticleFile(const ParticleFile& f) {
             }
         }
     }
+    for (const auto& [name, areas] : f.setAreas) {
+        const auto set = f.sets.find(name);
+        if (set == f.sets.end()) invalid("face areas of set '" + name + "', which does not exist");
+        if (areas.size() != set->second.size())
+            invalid("set '" + name + "' has " + std::to_string(areas.size()) + " face areas for " +
+                    std::to_string(set->second.size()) + " particles");
+        for (const Vec3& A : areas)
+            if (!A.allFinite()) invalid("set '" + name + "' has a face area that is not finite");
+    }
 }
 
 namespace {
@@ -246,6 +255,14 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f)
         h5.createGroup("/sets");
         for (const auto& [name, members] : f.sets) {
             h5.write("/sets/" + name, members.data(), {members.size()});
+        }
+        if (!f.setAreas.empty()) {
+            h5.createGroup("/set_areas");
+            for (const auto& [name, areas] : f.setAreas) {
+                h5.write("/set_areas/" + name, areas.empty() ? nullptr : areas.front().data(),
+                         {areas.size(), 3});
+                h5.setAttribute("/set_areas/" + name, "units", std::string("m^2"));
+            }
         }
         if (!f.transient.empty()) writeOverset(h5, f);
         h5.close(path);
@@ -380,6 +397,14 @@ ParticleFile readParticleFile(const std::filesystem::path& path) {
             f.sets.emplace(name, std::move(members));
         }
     }
+    if (h5.exists("/set_areas")) {
+        for (const std::string& name : h5.members("/set_areas")) {
+            const auto set = f.sets.find(name);
+            if (set == f.sets.end())
+                throw IoError(h5.name() + ": /set_areas/" + name + " names no set of /sets");
+            f.setAreas.emplace(name, readVec3(h5, "/set_areas/" + name, set->second.size()));
+        }
+    }
 
     readOverset(h5, f);
 
@@ -389,46 +414,6 @@ ParticleFile readParticleFile(const std::filesystem::path& path) {
         throw IoError(h5.name() + ": " + e.what());
     }
     return f;
-}
-
-Reference buildReference(const ParticleFile& f, std::span<const double> densityPerBody,
-                         double kappa) {
-    if (!(kappa > 0.0) || !std::isfinite(kappa)) {
-        throw InputError("kappa must be positive (got " + std::to_string(kappa) + ")");
-    }
-    if (densityPerBody.size() < f.bodies.size()) {
-        throw InputError("a density is needed for each of the " + std::to_string(f.bodies.size()) +
-                         " bodies (got " + std::to_string(densityPerBody.size()) + ")");
-    }
-    for (std::size_t b = 0; b < f.bodies.size(); ++b) {
-        if (!(densityPerBody[b] > 0.0) || !std::isfinite(densityPerBody[b])) {
-            throw InputError("density of body " + std::to_string(b) + " must be positive");
-        }
-    }
-    Reference ref;
-    ref.dim = Dimension{3};
-    ref.kappa = kappa;
-    ref.spaces = f.spaces;
-    ref.X = f.X;
-    ref.theta = f.theta;
-    ref.volume = f.volume;
-    ref.body = f.body;
-    ref.space = f.space;
-    ref.overset.resize(f.overset.size());
-    for (std::size_t e = 0; e < f.overset.size(); ++e)
-        ref.overset[e] = {f.overset.particle[e], f.overset.space[e], f.overset.theta[e],
-                          f.overset.omega[e]};
-    ref.oversetKappa = f.overset.kappa;
-    if (!ref.overset.empty() && kappa > ref.oversetKappa)
-        throw InputError("kernel factor κ = " + std::to_string(kappa) +
-                         " exceeds the κ = " + std::to_string(ref.oversetKappa) +
-                         " the particle file's overset entries were made for (re-run gsph-preproc "
-                         "with --overset-kappa ≥ κ)");
-    ref.density.resize(f.volume.size());
-    for (std::size_t a = 0; a < f.volume.size(); ++a) {
-        ref.density[a] = densityPerBody[static_cast<std::size_t>(f.body[a])];
-    }
-    return ref;
 }
 
 ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigned deadlineSeconds) {
@@ -459,6 +444,11 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
             for (const auto& [name, members] : f.sets) {
                 w.text(name);
                 w.array(members);
+            }
+            w.value<std::uint64_t>(f.setAreas.size());
+            for (const auto& [name, areas] : f.setAreas) {
+                w.text(name);
+                w.array(areas);
             }
             writeProvenance(w, f.provenance);
         },
@@ -491,6 +481,11 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
     for (std::uint64_t k = 0; k < sets; ++k) {
         std::string name = r.text();
         f.sets[name] = r.array<Index>();
+    }
+    const auto areaSets = r.value<std::uint64_t>();
+    for (std::uint64_t k = 0; k < areaSets; ++k) {
+        std::string name = r.text();
+        f.setAreas[name] = r.array<Vec3>();
     }
     f.provenance = readProvenance(r);
     return f;

@@ -19,7 +19,6 @@
 #include <array>
 #include <filesystem>
 #include <map>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -31,7 +30,7 @@ namespace gsph {
 
 inline constexpr const char* kParticleFormat = "gsph-particles";
 inline constexpr int kParticleFormatMajor = 1;  ///< readers reject another major version
-inline constexpr int kParticleFormatMinor = 1;  ///< additions that old readers may ignore
+inline constexpr int kParticleFormatMinor = 2;  ///< additions that old readers may ignore
 
 /// One body: a gmsh physical volume group (or the whole mesh when there is none).
 struct BodyInfo {
@@ -55,6 +54,10 @@ struct ParticleFile {
     std::vector<LatticeSpace> spaces;                ///< per space: cells, periodic flags, Δθ
     std::vector<BodyInfo> bodies;                    ///< per body id
     std::map<std::string, std::vector<Index>> sets;  ///< named particle sets (sorted indices)
+    /// Per set (optional; since 1.2): the outward area vector of each member's cell faces on the
+    /// set's surface in the reference configuration, in the order of the set's indices [m²]
+    /// (what a pressure on the set acts on, boundary/pressure.hpp).
+    std::map<std::string, std::vector<Vec3>> setAreas;
     Provenance provenance;
 
     Index size() const { return static_cast<Index>(X.size()); }
@@ -78,15 +81,5 @@ ParticleFile readParticleFile(const std::filesystem::path& path);
 /// IoError too (HDF5 loops on some damaged files).
 ParticleFile readParticleFileIsolated(const std::filesystem::path& path,
                                       unsigned deadlineSeconds = 0);
-
-/// The reference configuration of a run from a particle file: X, θ, volume, body, space,
-/// spaces, overset entries (copied as they are), dim = 3, κ, and ρ0 per particle. Derived fields
-/// (pairs, metrics, mass) are filled by buildPairs and computeGeometry (mass = ρ0 ω det M:
-/// docs/theory.md).
-/// @param[in] densityPerBody ρ0 [kg/m³] indexed by body id; needs one entry per body.
-/// @param[in] kappa h = κΔθ (DESIGN §3).
-/// Throws InputError if a density is missing or not positive, or κ is not positive.
-Reference buildReference(const ParticleFile& file, std::span<const double> densityPerBody,
-                         double kappa);
 
 }  // namespace gsph

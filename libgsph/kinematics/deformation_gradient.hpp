@@ -12,6 +12,7 @@
 // pairs instead (neighbors/stencil_blocks.hpp), equal up to round-off.
 #pragma once
 
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <vector>
 
@@ -20,6 +21,17 @@
 #include "particles/reference.hpp"
 
 namespace gsph {
+
+/// Cofactor matrix cof F = J F^{-T}, columns F₁×F₂, F₂×F₀, F₀×F₁ (F_i: columns of F). The force
+/// factors and Nanson's formula need J F^{-T} only, so taking it directly saves the inverse and
+/// its division.
+inline Mat3 cofactor(const Mat3& F) {
+    Mat3 C;
+    C.col(0) = F.col(1).cross(F.col(2));
+    C.col(1) = F.col(2).cross(F.col(0));
+    C.col(2) = F.col(0).cross(F.col(1));
+    return C;
+}
 
 /// Accumulates the θ-gradients Σ_b ω (x_b − x_a) ⊗ ∇W_ab and the same of v at particle a (the
 /// inner pair loop of the step), as Σ_b x_b ⊗ w_ab − x_a ⊗ Σ_b w_ab with w_ab = ω ∇W_ab.

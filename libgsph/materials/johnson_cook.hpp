@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Johnson–Cook thermo-visco-plasticity with von Mises yield and the Wilkins radial return
 // (DESIGN §5, paper §"Thermo-visco-plastic behavior"), pressure from an equation of state
-// (materials/eos.hpp) and optional Johnson–Cook damage (failure/johnson_cook_damage.hpp).
+// (materials/eos.hpp) and optional Johnson–Cook damage (materials/johnson_cook_damage.hpp).
 //
 //   σ = s − p I;  s_trial = R s_n R^T + 2G Δt dev D   (Jaumann, as materials/hypoelastic.hpp)
 //   σy = (1 − D)(A + B ε̄p^n) · rate · (1 − T*^m),  T* = (T − Tr)/(Tm − Tr) clamped to [0, 1]
@@ -21,9 +21,9 @@
 #include <optional>
 
 #include "core/types.hpp"
-#include "failure/johnson_cook_damage.hpp"
 #include "materials/elastic_constants.hpp"
 #include "materials/eos.hpp"
+#include "materials/johnson_cook_damage.hpp"
 #include "materials/material_point.hpp"
 
 namespace gsph {

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "core/types.hpp"
-#include "neighbors/pair_list.hpp"
+#include "particles/pair_list.hpp"
 
 namespace gsph {
 

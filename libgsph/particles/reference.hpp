@@ -13,10 +13,12 @@
 
 #include <array>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "core/types.hpp"
-#include "neighbors/pair_list.hpp"
+#include "particles/pair_list.hpp"
 
 namespace gsph {
 
@@ -130,5 +132,14 @@ struct Reference {
 
     Index size() const { return static_cast<Index>(X.size()); }
 };
+
+/// "particle 12 at X = (…) m, t = … s": how a NumericalError names a particle.
+inline std::string describeParticle(const Reference& ref, Index a, double time) {
+    const Vec3& X = ref.X[static_cast<std::size_t>(a)];
+    char text[160];
+    std::snprintf(text, sizeof text, "particle %d at X = (%.6g, %.6g, %.6g) m, t = %.6e s", a, X[0],
+                  X[1], X[2], time);
+    return text;
+}
 
 }  // namespace gsph

@@ -126,8 +126,10 @@ int main(int argc, char** argv) {
     std::printf("stencil strips       up to %d lanes\n", laneWidth());
     std::printf("viscosity/hourglass  %s/%s\n", noViscosity ? "off" : "on",
                 noHourglass ? "off" : "on");
+    const auto* pairContact = sim.integrator().stage<PairContactStage>();
     std::printf("contact              %s (%ld pairs in contact at the end)\n",
-                contact ? "two bodies" : "off", sim.integrator().contact().pairsInContact());
+                contact ? "two bodies" : "off",
+                pairContact ? pairContact->contact().pairsInContact() : 0L);
     std::printf("setup                %.2f s (pairs, metric, first forces)\n", setupSeconds);
     std::printf("steps                %d in %.3f s\n", steps, seconds);
     std::printf("particle-steps/s     %.3e  (%.3e per thread)\n", rate, rate / threads);

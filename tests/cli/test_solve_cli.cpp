@@ -229,6 +229,49 @@ TEST(SolveCli, WallGravityAndSetForceCaseBalancesItsEnergy) {
     EXPECT_LT(rows.back()[col("momentum_y")], 0.0);
 }
 
+// A pressure on the sample bar's "load" face (x = L, 1 cm²; gsph-preproc's face areas): the
+// momentum is the impulse −p A t (up to the face's lateral strains) and the energy balances.
+// A particle file without face areas (the bundled format-1.1 one) gets a one-line refusal.
+TEST(SolveCli, PressureOnASetPushesWithItsImpulseAndBalancesItsEnergy) {
+    TempDir dir;
+    const std::string text =
+        "[run]\nparticles = \"particles.h5\"\nend_time = 1.0e-5\noutput_interval = 1.0e-6\n"
+        "viscosity = [0.05, 1.0]\n" +
+        kSteelBar + "[[set]]\nname = \"load\"\npressure = [[0.0, 0.0], [1.0e-6, 1.0e7]]\n";
+    const auto r = solveCaseText(dir, "pressure.toml", text);
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(dir / "run" / "history.csv", header);
+    const auto col = [&](const std::string& name) {
+        return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
+                                        header.begin());
+    };
+    const auto& last = rows.back();
+    // ∫ p dt over the ramp to 1 µs and the plateau to 10 µs: 1e7 (0.5e-6 + 9e-6).
+    const double impulse = -1e7 * 1e-4 * 9.5e-6;
+    const double external = last[col("external_work")];
+    std::printf(
+        "[pressure cli] momentum_x %.6e vs −p A t %.6e; external work %.4e J, energy "
+        "drift %.2e J\n",
+        last[col("momentum_x")], impulse, external,
+        last[col("total_energy")] - rows.front()[col("total_energy")]);
+    EXPECT_NEAR(last[col("momentum_x")] / impulse, 1.0, 5e-5);  // measured 1.6e-5
+    EXPECT_GT(external, 0.0);
+    EXPECT_LT(std::abs(last[col("total_energy")] - rows.front()[col("total_energy")]),
+              1e-5 * external);  // measured 2.4e-6
+
+    TempDir old;
+    std::ofstream(old / "pressure.toml")
+        << "[run]\nparticles = \"" + (kSource / "cases/graded_bar/particles.h5").string() +
+               "\"\nend_time = 1.0e-6\noutput_interval = 1.0e-6\n" + kSteelBar +
+               "[[set]]\nname = \"load\"\npressure = 1.0e7\n";
+    const auto refused = runCommand(kSolve + " " + (old / "pressure.toml").string() + " -o " +
+                                    (old / "run").string());
+    EXPECT_EQ(refused.status, 1);
+    EXPECT_NE(refused.err.find("a pressure on set 'load' needs its face areas"), std::string::npos)
+        << refused.err;
+}
+
 // The Taylor bar's shape does not depend on the thread count. The sample case on a
 // small O-grid (core + annulus, overset band, Johnson–Cook + Mie–Grüneisen, the anvil wall)
 // through ~2 µs of impact, on 1 and 2 threads: the checkpoints (the whole state) are

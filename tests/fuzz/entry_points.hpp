@@ -22,6 +22,7 @@
 #include "io/particle_file.hpp"
 #include "material_config.hpp"
 #include "mesh_process.hpp"
+#include "reference/reference_builder.hpp"
 
 namespace gsph::fuzz {
 

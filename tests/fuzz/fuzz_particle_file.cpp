@@ -35,6 +35,7 @@
 #include "fuzz_support.hpp"
 #include "io/hdf5_file.hpp"
 #include "io/particle_file.hpp"
+#include "reference/reference_builder.hpp"
 
 namespace {
 

@@ -14,6 +14,7 @@
 #include "gmsh_input.hpp"
 #include "io/particle_file.hpp"
 #include "neighbors/theta_search.hpp"
+#include "reference/reference_builder.hpp"
 #include "spaces/metric.hpp"
 
 namespace gsph::test {

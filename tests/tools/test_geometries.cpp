@@ -115,6 +115,12 @@ TEST(Geometries, GradedBar) {
     ASSERT_EQ(f.sets.at("clamp").size(), 16u);
     for (Index a : f.sets.at("clamp")) EXPECT_EQ(f.latticeIndex[a][0], 0);
     for (Index a : f.sets.at("load")) EXPECT_EQ(f.latticeIndex[a][0], 19);
+    // The sets' face areas: outward, and summing to the bar's section (planar faces: exact).
+    Vec3 clamp = Vec3::Zero(), load = Vec3::Zero();
+    for (const Vec3& A : f.setAreas.at("clamp")) clamp += A;
+    for (const Vec3& A : f.setAreas.at("load")) load += A;
+    EXPECT_LT((clamp - Vec3(-1e-4, 0, 0)).norm(), 1e-18);
+    EXPECT_LT((load - Vec3(1e-4, 0, 0)).norm(), 1e-18);
     // Graded along x: cells grow by the grading ratio 1.1 from the clamp (gmsh places the
     // progression's nodes to about 1e-8).
     EXPECT_NEAR(f.volume[1] / f.volume[0], 1.1, 1e-6);
@@ -230,6 +236,13 @@ TEST(Geometries, TaylorBarOgrid) {
     EXPECT_NEAR(totalVolume(f) / exact, 1.0, 1e-2);
     ASSERT_EQ(f.sets.at("impact").size(), 8u * 8u + 4u * 8u * 4u);
     for (Index a : f.sets.at("impact")) EXPECT_EQ(f.latticeIndex[a][2], 0);
+    // The impact face's areas point out of the rod (−z) and sum to the meshed face: the
+    // circle's inscribed 32-gon at the rim, π R² · sin(2π/32)/(2π/32) = 0.99359 π R².
+    Vec3 impact = Vec3::Zero();
+    for (const Vec3& A : f.setAreas.at("impact")) impact += A;
+    const double R = 3.8e-3, polygon = 0.5 * 32 * R * R * std::sin(2 * M_PI / 32);
+    EXPECT_NEAR(impact[2] / -polygon, 1.0, 1e-9);
+    EXPECT_LT(std::hypot(impact[0], impact[1]), 1e-12 * polygon);
     EXPECT_EQ(f.sets.at("lateral").size(), 32u * 40u);
 }
 

@@ -13,6 +13,7 @@
 #include "io/hdf5_file.hpp"
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
+#include "reference/reference_builder.hpp"
 #include "temp_dir.hpp"
 
 namespace gsph {
@@ -43,6 +44,7 @@ ParticleFile sampleFile() {
     f.sets["clamp"] = {0, 2};
     f.sets["tip face"] = {4, 5, 6};
     f.sets["empty"] = {};
+    f.setAreas["tip face"] = {Vec3(0.0, 0.0, 1e-6), Vec3(0.0, 0.0, 2e-6), Vec3(1e-7, 0.0, 1e-6)};
     f.provenance = {"gsph-test", "9.9.9", "plate.geo", std::string(64, 'a'), "refine=2", "SI"};
     return f;
 }
@@ -136,6 +138,13 @@ TEST(ParticleFile, RoundTripGivesIdenticalArrays) {
     EXPECT_EQ(g.bodies[1].name, "projectile");
     EXPECT_EQ(g.bodies[1].sourceTag, 2);
     EXPECT_EQ(g.sets, f.sets);
+    ASSERT_EQ(g.setAreas.size(), 1u);
+    EXPECT_TRUE(bitwiseEqual(f.setAreas.at("tip face"), g.setAreas.at("tip face")));
+    // The child-process reader (gsph-solve's) carries the sets and their areas too.
+    const ParticleFile h = readParticleFileIsolated(dir / "p.h5");
+    EXPECT_EQ(h.sets, f.sets);
+    ASSERT_EQ(h.setAreas.size(), 1u);
+    EXPECT_TRUE(bitwiseEqual(f.setAreas.at("tip face"), h.setAreas.at("tip face")));
     EXPECT_EQ(g.provenance.tool, "gsph-test");
     EXPECT_EQ(g.provenance.toolVersion, "9.9.9");
     EXPECT_EQ(g.provenance.sourceFile, "plate.geo");
@@ -180,7 +189,7 @@ TEST(ParticleFile, ReadableByH5py) {
     const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
     // Python prints a float in its shortest round-trip form: compare by value, exactly.
-    EXPECT_NE(out.find("gsph-particles 1.1 SI"), std::string::npos) << out;
+    EXPECT_NE(out.find("gsph-particles 1.2 SI"), std::string::npos) << out;
     EXPECT_NE(out.find("(7, 3) (7, 3) (7,) (7, 3)"), std::string::npos) << out;
     EXPECT_NE(out.find("[3, 1, 1] [1, 0, 0]"), std::string::npos) << out;
     EXPECT_NE(out.find("['clamp', 'empty', 'tip face'] [4, 5, 6]"), std::string::npos) << out;
@@ -205,6 +214,15 @@ TEST(ParticleFile, InvalidContentIsRejectedAndNothingIsWritten) {
     EXPECT_THROW(writeParticleFile(dir / "p.h5", f), InputError);
     f = sampleFile();
     f.latticeIndex[6] = {3, 0, 0};
+    EXPECT_THROW(writeParticleFile(dir / "p.h5", f), InputError);
+    f = sampleFile();
+    f.setAreas["tip face"].pop_back();  // an area per particle of the set, or none
+    EXPECT_THROW(writeParticleFile(dir / "p.h5", f), InputError);
+    f = sampleFile();
+    f.setAreas["no such set"] = {};
+    EXPECT_THROW(writeParticleFile(dir / "p.h5", f), InputError);
+    f = sampleFile();
+    f.setAreas["tip face"][0][1] = std::nan("");
     EXPECT_THROW(writeParticleFile(dir / "p.h5", f), InputError);
     EXPECT_EQ(dir.entries(), 0);
 }
@@ -252,7 +270,7 @@ TEST(ParticleFile, OversetReadableByH5pyAndFormat10StillReads) {
     int status = 0;
     const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
-    EXPECT_EQ(out, "1.1 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
+    EXPECT_EQ(out, "1.2 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
     const ParticleFile old = readParticleFile(dir / "p.h5");
     EXPECT_TRUE(old.transient.empty());
     EXPECT_EQ(old.overset.size(), 0u);

@@ -32,7 +32,7 @@ double totalMass(const Reference& ref) {
 
 Vec3 wallReaction(const Simulation& sim) {
     Vec3 r = Vec3::Zero();
-    for (const Vec3& f : sim.integrator().workspace().wallForce) r += f;
+    for (const Vec3& f : sim.integrator().stage<WallStage>()->particleForces()) r += f;
     return r;
 }
 
@@ -119,7 +119,8 @@ TEST(Contact, TwoBlocksConserveMomentumAndDoNotInterpenetrate) {
                 faceB = std::min(faceB, s.x[p][0] - 0.5 * ref.spacing[p]);
         }
         faceOverlap = std::max(faceOverlap, faceA - faceB);
-        maxPairs = std::max(maxPairs, sim.integrator().contact().pairsInContact());
+        maxPairs = std::max(maxPairs,
+                            sim.integrator().stage<PairContactStage>()->contact().pairsInContact());
     });
     // The documented bound (docs/theory.md "Contact"): twice the static squeeze of one pair
     // that carries the 1-D impact stress σ = v Z_a Z_b/(Z_a + Z_b) (Z = ρc) over the larger

@@ -98,7 +98,7 @@ std::vector<Vec3> forcesUnder(Simulation& sim) {
 // Largest single-pair term |ω_b K_c ∇W_cb| of particle c: the scale of "one pair's force".
 double singlePairForce(const Simulation& sim, Index c) {
     const Reference& ref = sim.reference();
-    const Mat3& K = sim.integrator().workspace().factors.K[static_cast<std::size_t>(c)];
+    const Mat3& K = sim.integrator().stressUpdate().factors().K[static_cast<std::size_t>(c)];
     double m = 0.0;
     for (Index k = ref.pairs.begin(c); k < ref.pairs.end(c); ++k) {
         const auto b = static_cast<std::size_t>(ref.pairs.neighbor[static_cast<std::size_t>(k)]);

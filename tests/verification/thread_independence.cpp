@@ -150,7 +150,7 @@ TEST(ThreadIndependence, ContactRunsAreBitIdenticalToo) {
             if (ref.body[a] == 1) v[a] = Vec3(3.0, 0.0, -60.0);
         sim.setVelocities(v);
         for (int i = 0; i < 40; ++i) sim.step();
-        EXPECT_GT(sim.integrator().contact().pairsInContact(), 0);
+        EXPECT_GT(sim.integrator().stage<PairContactStage>()->contact().pairsInContact(), 0);
         *energy = sim.energy();
         omp_set_num_threads(saved);
         return sim.state();

@@ -199,7 +199,7 @@ TEST(CylinderWall, MovingCylinderKeepsTheEnergyLedgerBalanced) {
     // The force columns: per wall, Σ over particles of that wall's force; the two walls'
     // together are the per-particle totals.
     Vec3 sum = Vec3::Zero();
-    for (const Vec3& fa : sim.integrator().workspace().wallForce) sum += fa;
+    for (const Vec3& fa : sim.integrator().stage<WallStage>()->particleForces()) sum += fa;
     const Vec3 both = sim.wallForces()[0] + sim.wallForces()[1];
     EXPECT_LT((both - sum).norm(), 1e-9 * sum.norm());
     EXPECT_LT(sim.wallForces()[0][2], 0.0) << "the indenter pushes down";

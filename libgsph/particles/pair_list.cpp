@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-#include "neighbors/pair_list.hpp"
+#include "particles/pair_list.hpp"
 
 namespace gsph {
 

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+#include "boundary/constraints.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.hpp"
+
+namespace gsph {
+
+void checkConstraints(const std::vector<VelocityConstraint>& constraints, const Reference& ref) {
+    for (const VelocityConstraint& c : constraints)
+        for (Index a : c.particles)
+            if (a < 0 || a >= ref.size())
+                throw InputError("constraint '" + c.name + "' names particle " + std::to_string(a) +
+                                 " outside [0, " + std::to_string(ref.size()) + ")");
+}
+
+void applyConstraints(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
+                      State& state, double t) {
+    for (const VelocityConstraint& c : constraints)
+        for (Index a : c.particles) {
+            const auto ia = static_cast<std::size_t>(a);
+            state.v[ia] = c.at(t, ref.X[ia]);
+        }
+}
+
+double reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
+                     const State& state, const std::vector<Vec3>& force) {
+    double power = 0.0;
+    const double eps = std::max(state.dt, 1e-12) * 1e-3;
+    for (const VelocityConstraint& c : constraints) {
+        if (!c.velocity) continue;  // fixed: no power
+        for (Index a : c.particles) {
+            const auto ia = static_cast<std::size_t>(a);
+            const Vec3 accel =
+                (c.at(state.time + eps, ref.X[ia]) - c.at(state.time - eps, ref.X[ia])) / (2 * eps);
+            power += (ref.mass[ia] * accel - force[ia]).dot(state.v[ia]);
+        }
+    }
+    return power;
+}
+
+}  // namespace gsph

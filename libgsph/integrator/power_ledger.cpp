@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+#include "integrator/power_ledger.hpp"
+
+#include "core/parallel.hpp"
+
+namespace gsph {
+namespace {
+
+// Σ f_a·v_a over the particles (0 for a channel no stage uses).
+double powerOf(const std::vector<Vec3>& part, const State& state, std::vector<double>& partial) {
+    if (part.empty()) return 0.0;
+    return deterministicSum(
+        static_cast<std::ptrdiff_t>(part.size()), 0.0,
+        [&](std::ptrdiff_t a) {
+            return part[static_cast<std::size_t>(a)].dot(state.v[static_cast<std::size_t>(a)]);
+        },
+        partial);
+}
+
+}  // namespace
+
+LedgerPowers measurePowers(const Reference& ref, const State& state, const ForceChannels& channels,
+                           double stagePower, const std::vector<VelocityConstraint>& constraints,
+                           std::vector<double>& partialSums) {
+    LedgerPowers p;
+    p.viscous = powerOf(channels.parts.viscous, state, partialSums);
+    p.hourglass = powerOf(channels.parts.hourglass, state, partialSums);
+    p.boundary = reactionPower(constraints, ref, state, channels.force);
+    p.external = channels.external.empty()
+                     ? stagePower
+                     : stagePower + powerOf(channels.external, state, partialSums);
+    return p;
+}
+
+void startLedger(EnergyLedger& ledger, const LedgerPowers& powers) {
+    ledger.viscousPower = powers.viscous;
+    ledger.hourglassPower = powers.hourglass;
+    ledger.boundaryPower = powers.boundary;
+    ledger.externalPower = powers.external;
+}
+
+void bookStep(EnergyLedger& L, const LedgerPowers& p, double dt) {
+    L.externalWork += 0.5 * dt * (L.externalPower + p.external);
+    L.viscousWork -= 0.5 * dt * (L.viscousPower + p.viscous);
+    L.hourglassWork -= 0.5 * dt * (L.hourglassPower + p.hourglass);
+    L.boundaryWork += 0.5 * dt * (L.boundaryPower + p.boundary);
+    startLedger(L, p);
+}
+
+}  // namespace gsph

@@ -1,0 +1,250 @@
+// SPDX-License-Identifier: MIT
+#include "integrator/stress_update.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <cmath>
+#include <string>
+
+#include "core/error.hpp"
+#include "core/parallel.hpp"
+#include "kinematics/deformation_gradient.hpp"
+
+namespace gsph {
+namespace {
+
+// Lower bound of the smallest stretch σ_min(F) = 1/‖F^{-1}‖₂ ≥ 1/√(‖F^{-1}‖₁‖F^{-1}‖∞):
+// exact for diagonal F, cheap, and conservative for the time step. With F^{-1} = (cof F)^T/J:
+// ‖F^{-1}‖₁‖F^{-1}‖∞ = ‖cof F‖∞‖cof F‖₁/J².
+double smallestStretchBound(const Mat3& cof, double J) {
+    const double norm1 = cof.cwiseAbs().colwise().sum().maxCoeff();
+    const double normInf = cof.cwiseAbs().rowwise().sum().maxCoeff();
+    return J / std::sqrt(norm1 * normInf);
+}
+
+enum class Failure : std::uint8_t { None, Inverted, NotFinite };
+
+// What steps 3–4 read and write, shared by the per-block functions below.
+struct KinematicsStep {
+    const Reference& ref;
+    State& state;
+    StressFactors& factors;
+    ParticleFields& fields;
+    std::vector<double>& lengthScale;
+    std::vector<std::uint8_t>& failure;
+    std::vector<double>& plasticWork;
+    std::vector<double>& damageDissipation;
+    std::vector<double>& fractureEnergy;
+    double dt;
+    bool atRest;  // only derive the factors from the current F and σ (initialisation)
+    Mat3 outOfPlane;
+    const BrittleBonds& bonds;
+    const Mat3* G;  // per particle: the reference's, or recomputed over surviving bonds
+};
+
+// The factors the force loop reads, from F and σ at t_{n+1}:
+// P = J σ F^{-T} (DESIGN §4); N = V J F^{-T} G = V (cof F) G, K = σ N = V P G.
+template <class Model>
+void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const Mat3& F,
+                  MaterialPoint& point) {
+    const Mat3 C = cofactor(F);
+    const double J = F.col(0).dot(C.col(0));
+    if (!(J > 0.0)) {
+        s.failure[ia] =
+            static_cast<std::uint8_t>(std::isfinite(J) ? Failure::Inverted : Failure::NotFinite);
+        return;
+    }
+    point.density = model.elastic().density / J;
+    const Mat3 N = s.ref.quadVolume[ia] * C * s.G[ia];
+    s.factors.N.set(ia, N);
+    s.factors.K.set(ia, point.cauchy * N);
+    s.factors.density[ia] = point.density;
+    s.factors.soundSpeed[ia] = model.waveSpeed(point);
+    s.fields.F.set(ia, F);
+    // A particle whose surviving bonds raise its G stiffens its pair forces as ‖G‖²
+    // (failure/brittle_bonds.hpp, stepFactor).
+    s.lengthScale[ia] =
+        s.ref.spacing[ia] * smallestStretchBound(C, J) * s.bonds.stepFactor(static_cast<Index>(ia));
+    s.failure[ia] =
+        static_cast<std::uint8_t>(point.cauchy.allFinite() ? Failure::None : Failure::NotFinite);
+}
+
+// Steps 3–4 for particle a from its θ-gradients of x and v (kinematics/deformation_gradient.hpp):
+// F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the force factors.
+template <class Model>
+void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3& gradX,
+                     const Mat3& gradV) {
+    const auto ia = static_cast<std::size_t>(a);
+    const Mat3& G = s.G[ia];
+    const Mat3 Fdot = gradV * G.transpose();
+    // A particle that lost bonds in a body whose bonds break by damage integrates F in time
+    // (failure/brittle_bonds.hpp, integratesF): F over the surviving bonds would jump.
+    const Mat3 F = s.bonds.integratesF(a) ? Mat3(s.state.F[ia] + s.dt * Fdot)
+                                          : Mat3(gradX * G.transpose() + s.outOfPlane);
+    const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
+    MaterialPoint point;
+    point.cauchy = s.state.cauchy[ia];
+    const double J = F.determinant();
+    point.density = model.elastic().density / J;
+    if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
+    model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
+    s.state.F[ia] = F;
+    s.state.cauchy[ia] = point.cauchy;
+    if constexpr (Model::kTracksHistory) {
+        storeHistory(point, ia, s.state);
+        // Per current volume → per particle: V J (the particle's current volume).
+        const double volume = s.ref.quadVolume[ia] * J;
+        s.plasticWork[ia] = volume * point.plasticWork;
+        s.damageDissipation[ia] = volume * point.damageDissipation;
+    }
+    storeFactors(model, s, ia, F, point);
+}
+
+// A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
+// still needs a sound speed and a length for the time step. The elastic energy its stress
+// stored is released when σ is set to zero: V J (ψ(σ) − ψ(0)) at its kept F, booked as this
+// step's fracture energy (zero on later steps, σ being zero then). The part ψ(0) of the kept F
+// (the equation of state's compression energy of a Johnson–Cook particle, a function of J
+// alone) stays in the elastic energy, constant from then on; booking all of ψ(σ) would book
+// that part again on every step of a compressed detached particle.
+template <class Model>
+void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
+    const double J = s.state.F[ia].determinant();
+    MaterialPoint point;
+    point.cauchy = s.state.cauchy[ia];
+    point.density = model.elastic().density / J;
+    if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
+    const double stored = model.storedEnergyDensity(point);
+    point.cauchy.setZero();
+    s.fractureEnergy[ia] = s.ref.quadVolume[ia] * J * (stored - model.storedEnergyDensity(point));
+    s.state.cauchy[ia].setZero();
+    s.factors.N.set(ia, Mat3::Zero());
+    s.factors.K.set(ia, Mat3::Zero());
+    s.factors.density[ia] = point.density;
+    s.factors.soundSpeed[ia] = model.waveSpeed(point);
+    s.fields.F.set(ia, s.state.F[ia]);
+    s.lengthScale[ia] = s.ref.spacing[ia];
+    s.failure[ia] = 0;
+    if (!s.plasticWork.empty()) s.plasticWork[ia] = s.damageDissipation[ia] = 0.0;
+}
+
+template <class Model>
+void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blocks,
+                 const ParticleBlock& block) {
+    const BondView bonds = s.bonds.view(s.state);
+    if (s.atRest) {
+        for (Index i = 0; i < block.size(); ++i) {
+            const Index a = block.particle(i);
+            const auto ia = static_cast<std::size_t>(a);
+            if (s.bonds.detached(a)) {
+                detachParticle(model, s, ia);
+                continue;
+            }
+            MaterialPoint point;
+            point.cauchy = s.state.cauchy[ia];
+            storeFactors(model, s, ia, s.state.F[ia], point);
+        }
+    } else if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
+        BlockThetaGradients g;
+        stencilThetaGradients(blocks.stencils[static_cast<std::size_t>(block.stencil)], block,
+                              s.fields.x, s.fields.v, g);
+        for (Index i = 0; i < block.size(); ++i)
+            advanceParticle(model, s, block.particle(i), g.gradX(i), g.gradV(i));
+    } else {
+        for (Index i = 0; i < block.size(); ++i) {
+            const Index a = block.particle(i);
+            if (s.bonds.detached(a)) {
+                detachParticle(model, s, static_cast<std::size_t>(a));
+                continue;
+            }
+            Mat3 gradX, gradV;
+            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV, bonds.intact,
+                           bonds.keepsAll(a) ? s.ref.pairCorrections(a) : nullptr);
+            advanceParticle(model, s, a, gradX, gradV);
+        }
+    }
+}
+
+}  // namespace
+
+StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& bodies,
+                           const BrittleBonds& bonds)
+    : ref_(ref), bodies_(bodies), bonds_(bonds) {
+    const auto n = static_cast<std::size_t>(ref.size());
+    factors_.resize(n);
+    fields_.resize(n);
+    lengthScale_.assign(n, 0.0);
+    failure_.assign(n, 0);
+    for (std::size_t a = 0; a < n; ++a) fields_.X.set(a, ref.X[a]);
+    for (const BodyRange& body : bodies_)
+        blocks_.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
+    for (const BodyRange& body : bodies_)
+        if (tracksHistory(*body.material)) {
+            plasticWork_.assign(n, 0.0);
+            damageDissipation_.assign(n, 0.0);
+        }
+    if (bonds_.enabled()) fractureEnergy_.assign(n, 0.0);
+}
+
+void StressUpdate::advance(State& state, double dt, bool atRest) {
+    KinematicsStep s{ref_,
+                     state,
+                     factors_,
+                     fields_,
+                     lengthScale_,
+                     failure_,
+                     plasticWork_,
+                     damageDissipation_,
+                     fractureEnergy_,
+                     dt,
+                     atRest,
+                     ref_.dim.outOfPlane(),
+                     bonds_,
+                     bonds_.G().data()};
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        const StencilBlocks& blocks = blocks_[b];
+        std::visit(
+            [&](const auto& model) {
+                parallelForBlocks(static_cast<std::ptrdiff_t>(blocks.blocks.size()),
+                                  bodies_[b].end - bodies_[b].begin, [&](std::ptrdiff_t k) {
+                                      updateBlock(model, s, blocks,
+                                                  blocks.blocks[static_cast<std::size_t>(k)]);
+                                  });
+            },
+            *bodies_[b].material);
+    }
+    throwOnFailure(state);
+}
+
+void StressUpdate::throwOnFailure(const State& state) const {
+    for (std::size_t a = 0; a < failure_.size(); ++a) {
+        const auto f = static_cast<Failure>(failure_[a]);
+        if (f == Failure::None) continue;
+        const std::string what = f == Failure::Inverted
+                                     ? "inverted particle (J ≤ 0)"
+                                     : "non-finite deformation or stress (NaN/Inf)";
+        throw NumericalError(
+            what + ": " + describeParticle(ref_, static_cast<Index>(a), state.time),
+            static_cast<long>(a), state.time);
+    }
+}
+
+void StressUpdate::bookDissipation(State& state) {
+    if (bonds_.enabled())
+        state.ledger.fractureEnergy += deterministicSum(
+            ref_.size(), 0.0, [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; },
+            partialSums_);
+    for (const BodyRange& body : bodies_) {
+        if (!tracksHistory(*body.material)) continue;
+        const auto sumOver = [&](const std::vector<double>& perParticle) {
+            return deterministicSum(
+                body.end - body.begin, 0.0,
+                [&](Index i) { return perParticle[static_cast<std::size_t>(body.begin + i)]; },
+                partialSums_);
+        };
+        state.ledger.plasticWork += sumOver(plasticWork_);
+        state.ledger.damageDissipation += sumOver(damageDissipation_);
+    }
+}
+
+}  // namespace gsph

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// Steps 3–4 of Algorithm 1 (DESIGN §4), fused per particle and run block by block (stencil
+// blocks vectorise the θ-gradient sums, neighbors/stencil_blocks.hpp):
+//   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
+//   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
+//      (Johnson–Cook) also advance ε̄p, T, D, e and give their plastic work and the energy lost
+//      by failing particles; a particle detached by broken bonds releases the elastic energy its
+//      stress held as fracture energy (failure/brittle_bonds.hpp)
+// and from F_{n+1}, σ_{n+1} the factors the internal force reads (K = V P G, N = V J F^{-T} G,
+// sound speed, density) and each particle's current spacing ℓ_a for the time step.
+// Reads the SoA x, v that pack() copied during the drift. Allocation-free after construction.
+// Keeps nothing across steps that the State does not hold.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "failure/brittle_bonds.hpp"
+#include "forces/internal_force.hpp"
+#include "integrator/body_range.hpp"
+#include "neighbors/stencil_blocks.hpp"
+#include "particles/reference.hpp"
+#include "particles/state.hpp"
+
+namespace gsph {
+
+class StressUpdate {
+  public:
+    /// `bodies` and `bonds` must outlive it.
+    StressUpdate(const Reference& ref, const std::vector<BodyRange>& bodies,
+                 const BrittleBonds& bonds);
+
+    /// SoA copies of x_a and v_a for the stencil loops.
+    void pack(const State& state, Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        fields_.x.set(ia, state.x[ia]);
+        fields_.v.set(ia, state.v[ia]);
+    }
+    /// Steps 3–4 over Δt (atRest: only the factors, from the current F and σ: initialisation).
+    /// Throws NumericalError naming the first particle that inverted (J ≤ 0) or whose F or σ is
+    /// not finite.
+    void advance(State& state, double dt, bool atRest);
+    /// Adds this step's plastic work, failure losses and fracture energy of detached particles
+    /// to the state's ledger, in a fixed order.
+    void bookDissipation(State& state);
+
+    const StressFactors& factors() const { return factors_; }
+    const ParticleFields& fields() const { return fields_; }
+    /// Per body: its stencil and CSR blocks.
+    const std::vector<StencilBlocks>& blocks() const { return blocks_; }
+    /// Current spacing ℓ_a of each particle [m].
+    const std::vector<double>& lengthScale() const { return lengthScale_; }
+
+  private:
+    void throwOnFailure(const State& state) const;
+
+    const Reference& ref_;
+    const std::vector<BodyRange>& bodies_;
+    const BrittleBonds& bonds_;
+    StressFactors factors_;
+    ParticleFields fields_;
+    std::vector<StencilBlocks> blocks_;
+    std::vector<double> lengthScale_;
+    std::vector<std::uint8_t> failure_;  ///< per particle: why the update failed (0: it did not)
+    /// Per particle, this step's V J Δw_p and failure loss [J] (sized only when a body's model
+    /// tracks a history).
+    std::vector<double> plasticWork_, damageDissipation_;
+    /// Per particle, the elastic energy released when it was detached [J] (sized only when
+    /// bonds can break; written by the detaching step alone, zero before and after it).
+    std::vector<double> fractureEnergy_;
+    std::vector<double> partialSums_;  ///< scratch of deterministicSum
+};
+
+}  // namespace gsph
