@@ -39,11 +39,7 @@ class ConstantLoadStage final : public ForceStage {
     ConstantLoadStage(const Reference& ref, const Loads& loads)
         : load_(loadPerParticle(ref, loads)) {}
     std::string name() const override { return "gravity and set forces"; }
-    StageNeeds needs() const override {
-        StageNeeds n;
-        n.external = true;
-        return n;
-    }
+    StageNeeds needs() const override { return {.external = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
 
   private:

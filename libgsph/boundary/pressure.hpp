@@ -38,11 +38,7 @@ class PressureStage final : public ForceStage {
     /// increase.
     PressureStage(const Reference& ref, PressureLoad load);
     std::string name() const override { return "pressure on '" + load_.name + "'"; }
-    StageNeeds needs() const override {
-        StageNeeds n;
-        n.external = true;
-        return n;
-    }
+    StageNeeds needs() const override { return {.external = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
     const PressureLoad& load() const { return load_; }
 

@@ -21,11 +21,7 @@ class PairContactStage final : public ForceStage {
   public:
     explicit PairContactStage(PenaltyContact contact) : contact_(std::move(contact)) {}
     std::string name() const override { return "contact between bodies"; }
-    StageNeeds needs() const override {
-        StageNeeds n;
-        n.frequency2 = true;
-        return n;
-    }
+    StageNeeds needs() const override { return {.frequency2 = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
     const PenaltyContact& contact() const { return contact_; }
 
@@ -38,11 +34,7 @@ class WallStage final : public ForceStage {
     explicit WallStage(RigidWalls walls, std::size_t particles)
         : walls_(std::move(walls)), particleForce_(particles, Vec3::Zero()) {}
     std::string name() const override { return "rigid walls"; }
-    StageNeeds needs() const override {
-        StageNeeds n;
-        n.external = n.frequency2 = true;
-        return n;
-    }
+    StageNeeds needs() const override { return {.external = true, .frequency2 = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
     /// Per wall, its total force on the bodies: State::wallForce (history, restart).
     void record(State& state) const override { walls_.totalForces(state.wallForce); }
