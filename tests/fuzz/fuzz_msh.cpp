@@ -11,6 +11,8 @@
 #include "fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    gsph::fuzz::currentData = data;
+    gsph::fuzz::currentSize = size;
     const auto path = gsph::fuzz::writeScratch("fuzz.msh", data, size);
     gsph::fuzz::expectTypedOutcome([&] {
         gsph::fuzz::parsersInProcess() ? gsph::fuzz::readMeshInProcess(path)

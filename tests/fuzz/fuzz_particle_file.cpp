@@ -391,6 +391,8 @@ constexpr unsigned char kHdf5Signature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     static const bool structuredOnly = std::getenv("GSPH_FUZZ_STRUCTURED_ONLY") != nullptr;
+    gsph::fuzz::currentData = data;
+    gsph::fuzz::currentSize = size;
     std::filesystem::path path = gsph::fuzz::scratchDir() / "particles.h5";
     if (!structuredOnly && size >= sizeof kHdf5Signature &&
         std::memcmp(data, kHdf5Signature, 8) == 0) {

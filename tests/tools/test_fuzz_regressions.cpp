@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "fuzz/child_fault.hpp"
 #include "fuzz/entry_points.hpp"
 #include "io/snapshot.hpp"
 #include "temp_dir.hpp"
@@ -132,6 +133,86 @@ TEST(ThirdPartyFindings, ASnapshotThatHangsHdf5IsStoppedByTheDeadline) {
                                              ": the file crashed or hung HDF5's reader (signal "
                                              "14, Alarm clock): it is damaged or not a snapshot");
     }
+}
+
+// A sanitizer report in a reader's child process of a fuzz target (tests/fuzz/child_fault.hpp):
+// a fault inside HDF5 or gmsh is contained (their module), any other is a finding ("").
+const std::string kExe = "/w/build-fuzz/tests/fuzz/fuzz_particle_file";
+
+std::string report(const std::string& firstStack) {
+    return "==7==ERROR: AddressSanitizer: heap-buffer-overflow on address 0x6020 at pc 0x55\n"
+           "READ of size 16 at 0x6020 thread T0\n" +
+           firstStack +
+           "\n0x6020 is located 0 bytes to the right of 1-byte region\n"
+           "allocated by thread T0 here:\n"
+           "    #0 0x55 in malloc (" +
+           kExe +
+           "+0x4a2000) (BuildId: ab)\n"
+           "    #1 0x7f in H5FL_blk_malloc (/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x1f0)\n"
+           "\nSUMMARY: AddressSanitizer: heap-buffer-overflow in __asan_memcpy\n";
+}
+
+TEST(ChildFaults, AFaultInsideHdf5OrGmshIsTheirs) {
+    EXPECT_EQ(fuzz::thirdPartyFaultModule(
+                  report("    #0 0x55 in __asan_memcpy (" + kExe +
+                         "+0x4a1b2c) (BuildId: ab)\n"
+                         "    #1 0x7f in H5O__msg_iterate_real "
+                         "(/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x1a2b3c) (BuildId: cd)\n"
+                         "    #2 0x55 in gsph::h5::File::hasAttribute() const "
+                         "/w/libgsph/io/hdf5_file.cpp:210:12\n"),
+                  kExe),
+              "libhdf5_serial.so.103");
+    EXPECT_EQ(
+        fuzz::thirdPartyFaultModule(report("    #0 0x55 in operator new(unsigned long) (" + kExe +
+                                           "+0x4a3000)\n"
+                                           "    #1 0x7f in std::__throw_bad_alloc() "
+                                           "(/lib/x86_64-linux-gnu/libstdc++.so.6+0xa1b2c)\n"
+                                           "    #2 0x7f in GModel::_readMSH2(std::string const&) "
+                                           "(/lib/x86_64-linux-gnu/libgmsh.so.4.8+0x1234)\n"),
+                                    kExe),
+        "libgmsh.so.4.8");
+    // A static function of HDF5's has no name, only its module.
+    EXPECT_EQ(fuzz::thirdPartyFaultModule(
+                  report("    #0 0x55 in memcpy (" + kExe +
+                         "+0xc35d3) (BuildId: 58)\n"
+                         "    #1 0x7f  (/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x190f18) "
+                         "(BuildId: e9)\n"
+                         "    #2 0x7f in H5O__msg_iterate_real "
+                         "(/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x1b4ca4)\n"),
+                  kExe),
+              "libhdf5_serial.so.103");
+}
+
+TEST(ChildFaults, AFaultInOurCodeOrOneThatCannotBeToldIsAFinding) {
+    // Our frame (a source line) first, under the runtime's.
+    EXPECT_EQ(fuzz::thirdPartyFaultModule(
+                  report("    #0 0x55 in __asan_memcpy (" + kExe +
+                         "+0x4a1b2c)\n"
+                         "    #1 0x55 in gsph::readParticleFile(std::filesystem::path const&) "
+                         "/w/libgsph/io/particle_file.cpp:310:5\n"
+                         "    #2 0x7f in H5Literate2 "
+                         "(/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x1a2b3c)\n"),
+                  kExe),
+              "");
+    // Not symbolized: our code and the runtime look alike.
+    EXPECT_EQ(fuzz::thirdPartyFaultModule(
+                  report("    #0 0x55  (" + kExe +
+                         "+0x4a1b2c)\n"
+                         "    #1 0x7f  (/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x1a2b3c)\n"),
+                  kExe),
+              "");
+    // Another library's frame; a first stack of the runtime alone (the allocation's stack, in
+    // HDF5, is not the fault's).
+    EXPECT_EQ(fuzz::thirdPartyFaultModule(
+                  report("    #0 0x7f in inflate (/lib/x86_64-linux-gnu/libz.so.1+0x9f00)\n"
+                         "    #1 0x7f in H5Z__filter_deflate "
+                         "(/lib/x86_64-linux-gnu/libhdf5_serial.so.103+0x2b3c)\n"),
+                  kExe),
+              "");
+    EXPECT_EQ(fuzz::thirdPartyFaultModule(
+                  report("    #0 0x55 in __asan_memcpy (" + kExe + "+0x4a1b2c)\n"), kExe),
+              "");
+    EXPECT_EQ(fuzz::thirdPartyFaultModule("", kExe), "");
 }
 
 }  // namespace
