@@ -19,7 +19,10 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <optional>
 #include <sstream>
+#include <type_traits>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -59,11 +62,36 @@ double vonMises(const Mat3& sigma) {
     return std::sqrt(1.5 * s.squaredNorm());
 }
 
+namespace {
+
+// A snapshot field's value at one particle as a scalar: a vector's length, a number as it is.
+double scalarOf(const Vec3& v) {
+    return v.norm();
+}
+double scalarOf(double x) {
+    return x;
+}
+double scalarOf(Index x) {
+    return x;
+}
+double scalarOf(std::uint8_t x) {
+    return x;
+}
+
+// The fields that gsph-post derives, before the snapshot's own.
+constexpr const char* kDerivedScalars[] = {"von_mises", "pressure", "displacement", "J"};
+
+}  // namespace
+
 const std::vector<std::string>& scalarFieldNames() {
-    static const std::vector<std::string> names = {"von_mises", "pressure",       "displacement",
-                                                   "velocity",  "plastic_strain", "temperature",
-                                                   "damage",    "bond_damage",    "J",
-                                                   "body",      "space",          "transient"};
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> out(std::begin(kDerivedScalars), std::end(kDerivedScalars));
+        Snapshot().forEachField([&](const SnapshotField& field, const auto& array) {
+            using T = typename std::decay_t<decltype(array)>::value_type;
+            if (field.vtuName != nullptr && !std::is_same_v<T, Mat3>) out.push_back(field.vtuName);
+        });
+        return out;
+    }();
     return names;
 }
 
@@ -77,17 +105,70 @@ double scalarField(const Snapshot& s, std::size_t a, const std::string& name) {
     if (name == "von_mises") return vonMises(s.stress[a]);
     if (name == "pressure") return -s.stress[a].trace() / 3.0;
     if (name == "displacement") return (s.x[a] - s.X[a]).norm();
-    if (name == "velocity") return s.v[a].norm();
-    if (name == "plastic_strain") return s.plasticStrain[a];
-    if (name == "temperature") return s.temperature[a];
-    if (name == "damage") return s.damage[a];
-    if (name == "bond_damage") return s.bondDamage[a];
     if (name == "J") return s.F[a].determinant();
-    if (name == "body") return s.body[a];
-    if (name == "space") return s.space[a];
-    if (name == "transient") return s.transient.empty() ? 0.0 : s.transient[a];
-    throw InputError("unknown field '" + name + "'");
+    std::optional<double> value;
+    s.forEachField([&](const SnapshotField& field, const auto& array) {
+        using T = typename std::decay_t<decltype(array)>::value_type;
+        if constexpr (!std::is_same_v<T, Mat3>)
+            if (!value && field.vtuName != nullptr && name == field.vtuName)
+                value = a < array.size() ? scalarOf(array[a]) : 0.0;
+    });
+    if (!value) throw InputError("unknown field '" + name + "'");
+    return *value;
 }
+
+namespace {
+
+// The .vtu point-data array of a snapshot field (Snapshot::forEachField), filled in parallel
+// through raw pointers (VTK's setters are not safe to call from several threads).
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Vec3>& a) {
+    auto out = vtkSmartPointer<vtkDoubleArray>::New();
+    out->SetName(name);
+    out->SetNumberOfComponents(3);
+    out->SetNumberOfTuples(static_cast<vtkIdType>(a.size()));
+    double* p = out->GetPointer(0);
+    parallelFor(static_cast<std::ptrdiff_t>(a.size()), [&](std::ptrdiff_t i) {
+        for (int d = 0; d < 3; ++d) p[3 * i + d] = a[static_cast<std::size_t>(i)][d];
+    });
+    return out;
+}
+// Tensors: nine components named XX, XY, … ZZ (row-major), as ParaView lists them.
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Mat3>& a) {
+    auto out = vtkSmartPointer<vtkDoubleArray>::New();
+    out->SetName(name);
+    out->SetNumberOfComponents(9);
+    out->SetNumberOfTuples(static_cast<vtkIdType>(a.size()));
+    static const char* const kComponents[] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+    for (int c = 0; c < 9; ++c) out->SetComponentName(c, kComponents[c]);
+    double* p = out->GetPointer(0);
+    parallelFor(static_cast<std::ptrdiff_t>(a.size()), [&](std::ptrdiff_t i) {
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) p[9 * i + 3 * r + c] = a[static_cast<std::size_t>(i)](r, c);
+    });
+    return out;
+}
+template <class VtkArray, class T>
+vtkSmartPointer<vtkDataArray> scalarArray(const char* name, const std::vector<T>& a) {
+    auto out = vtkSmartPointer<VtkArray>::New();
+    out->SetName(name);
+    out->SetNumberOfComponents(1);
+    out->SetNumberOfTuples(static_cast<vtkIdType>(a.size()));
+    auto* p = out->GetPointer(0);
+    parallelFor(static_cast<std::ptrdiff_t>(a.size()),
+                [&](std::ptrdiff_t i) { p[i] = a[static_cast<std::size_t>(i)]; });
+    return out;
+}
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<double>& a) {
+    return scalarArray<vtkDoubleArray>(name, a);
+}
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Index>& a) {
+    return scalarArray<vtkIntArray>(name, a);
+}
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<std::uint8_t>& a) {
+    return scalarArray<vtkUnsignedCharArray>(name, a);
+}
+
+}  // namespace
 
 void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     const vtkIdType n = snap.size();
@@ -98,31 +179,17 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     vtkNew<vtkIdTypeArray> offsets, connectivity;
     offsets->SetNumberOfTuples(n + 1);
     connectivity->SetNumberOfTuples(n);
+    // Derived from the snapshot's fields; the fields themselves follow (Snapshot::forEachField).
     auto displacement = namedArray<vtkDoubleArray>("displacement", 3, n);
-    auto velocity = namedArray<vtkDoubleArray>("velocity", 3, n);
-    auto stress = namedArray<vtkDoubleArray>("stress", 9, n);
     auto mises = namedArray<vtkDoubleArray>("von_mises", 1, n);
     auto pressure = namedArray<vtkDoubleArray>("pressure", 1, n);
-    auto plastic = namedArray<vtkDoubleArray>("plastic_strain", 1, n);
-    auto temperature = namedArray<vtkDoubleArray>("temperature", 1, n);
-    auto damage = namedArray<vtkDoubleArray>("damage", 1, n);
-    auto bondDamage = namedArray<vtkDoubleArray>("bond_damage", 1, n);
     auto J = namedArray<vtkDoubleArray>("J", 1, n);
-    auto volume = namedArray<vtkDoubleArray>("reference_volume", 1, n);
-    auto body = namedArray<vtkIntArray>("body", 1, n);
-    auto space = namedArray<vtkIntArray>("space", 1, n);
-    auto transient = namedArray<vtkUnsignedCharArray>("transient", 1, n);
     // Filled through raw pointers: VTK's setters are not safe to call from several threads.
     double* X = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
     vtkIdType* off = offsets->GetPointer(0);
     vtkIdType* con = connectivity->GetPointer(0);
-    double *u = displacement->GetPointer(0), *v = velocity->GetPointer(0),
-           *sig = stress->GetPointer(0), *vm = mises->GetPointer(0), *p = pressure->GetPointer(0),
-           *ep = plastic->GetPointer(0), *T = temperature->GetPointer(0),
-           *D = damage->GetPointer(0), *Db = bondDamage->GetPointer(0), *detF = J->GetPointer(0),
-           *V = volume->GetPointer(0);
-    int *bd = body->GetPointer(0), *sp = space->GetPointer(0);
-    unsigned char* tr = transient->GetPointer(0);
+    double *u = displacement->GetPointer(0), *vm = mises->GetPointer(0),
+           *p = pressure->GetPointer(0), *detF = J->GetPointer(0);
     off[n] = n;
     parallelFor(n, [&](std::ptrdiff_t a) {
         const auto i = static_cast<std::size_t>(a);
@@ -131,21 +198,10 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
         for (int d = 0; d < 3; ++d) {
             X[3 * a + d] = snap.x[i][d];
             u[3 * a + d] = snap.x[i][d] - snap.X[i][d];
-            v[3 * a + d] = snap.v[i][d];
         }
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) sig[9 * a + 3 * r + c] = snap.stress[i](r, c);
         vm[a] = vonMises(snap.stress[i]);
         p[a] = -snap.stress[i].trace() / 3.0;
-        ep[a] = snap.plasticStrain[i];
-        T[a] = snap.temperature[i];
-        D[a] = snap.damage[i];
-        Db[a] = snap.bondDamage[i];
         detF[a] = snap.F[i].determinant();
-        V[a] = snap.volume[i];
-        bd[a] = snap.body[i];
-        sp[a] = snap.space[i];
-        tr[a] = snap.transient.empty() ? 0 : snap.transient[i];
     });
     vtkNew<vtkCellArray> cells;
     cells->SetData(offsets, connectivity);
@@ -153,10 +209,11 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     grid->SetPoints(points);
     grid->SetCells(VTK_VERTEX, cells);
     vtkPointData* pd = grid->GetPointData();
-    for (vtkDataArray* arr : std::initializer_list<vtkDataArray*>{
-             displacement, velocity, stress, mises, pressure, plastic, temperature, damage,
-             bondDamage, J, volume, body, space, transient})
+    for (vtkDataArray* arr : std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J})
         pd->AddArray(arr);
+    snap.forEachField([&](const SnapshotField& field, const auto& array) {
+        if (field.vtuName != nullptr) pd->AddArray(fieldArray(field.vtuName, array));
+    });
     writeXml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
 }
 

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <string>
+#include <type_traits>
 
 #include "core/error.hpp"
 #include "io/atomic_file.hpp"
@@ -41,6 +42,43 @@ std::vector<double> readScalars(const h5::File& f, const std::string& path, std:
     return d;
 }
 
+// One field's dataset: N×3 vectors, N×9 row-major tensors, N numbers; flags as int8.
+void writeField(h5::File& f, const std::string& name, const std::vector<Vec3>& a) {
+    f.write(name, a.empty() ? nullptr : a.front().data(), {a.size(), 3});
+}
+void writeField(h5::File& f, const std::string& name, const std::vector<Mat3>& a);
+void writeField(h5::File& f, const std::string& name, const std::vector<double>& a) {
+    f.write(name, a.data(), {a.size()});
+}
+void writeField(h5::File& f, const std::string& name, const std::vector<Index>& a) {
+    f.write(name, a.data(), {a.size()});
+}
+void writeField(h5::File& f, const std::string& name, const std::vector<std::uint8_t>& a) {
+    const std::vector<std::int8_t> flags(a.begin(), a.end());
+    f.write(name, flags.data(), {flags.size()});
+}
+
+// One field's dataset read back, its shape checked against the particle count n.
+void readField(const h5::File& f, const std::string& name, std::size_t n, std::vector<Vec3>& a) {
+    a = readVectors(f, name, n);
+}
+void readField(const h5::File& f, const std::string& name, std::size_t n, std::vector<Mat3>& a);
+void readField(const h5::File& f, const std::string& name, std::size_t n, std::vector<double>& a) {
+    a = readScalars(f, name, n);
+}
+void readField(const h5::File& f, const std::string& name, std::size_t n, std::vector<Index>& a) {
+    std::vector<std::size_t> dims;
+    a = f.read<std::int32_t>(name, dims);
+    if (a.size() != n) throw IoError(f.name() + ": " + name + " has the wrong length");
+}
+void readField(const h5::File& f, const std::string& name, std::size_t n,
+               std::vector<std::uint8_t>& a) {
+    std::vector<std::size_t> dims;
+    const std::vector<std::int8_t> flags = f.read<std::int8_t>(name, dims);
+    if (flags.size() != n) throw IoError(f.name() + ": " + name + " has the wrong length");
+    a.resize(n);
+    for (std::size_t i = 0; i < n; ++i) a[i] = flags[i] != 0 ? 1 : 0;
+}
 }  // namespace
 
 std::vector<double> rowMajor(const std::vector<Mat3>& m) {
@@ -62,6 +100,18 @@ std::vector<Mat3> fromRowMajor(const std::vector<double>& d) {
                     d[9 * a + 3 * static_cast<std::size_t>(i) + static_cast<std::size_t>(j)];
     return out;
 }
+
+namespace {
+
+void writeField(h5::File& f, const std::string& name, const std::vector<Mat3>& a) {
+    const std::vector<double> rows = rowMajor(a);
+    f.write(name, rows.data(), {a.size(), 9});
+}
+void readField(const h5::File& f, const std::string& name, std::size_t n, std::vector<Mat3>& a) {
+    a = fromRowMajor(readRows(f, name, n, 9));
+}
+
+}  // namespace
 
 std::vector<std::array<Index, 2>> brokenBonds(const PairList& pairs,
                                               const std::vector<std::uint8_t>& bondIntact) {
@@ -91,39 +141,46 @@ std::vector<double> brokenBondFraction(const PairList& pairs,
     return out;
 }
 
+Snapshot snapshotOf(const Reference& ref, const State& state) {
+    Snapshot s;
+    s.time = state.time;
+    s.step = state.step;
+    s.X = ref.X;
+    s.x = state.x;
+    s.v = state.v;
+    s.stress = state.cauchy;
+    s.F = state.F;
+    s.volume = ref.quadVolume;
+    s.body = ref.body;
+    s.space = ref.space;
+    s.plasticStrain = state.plasticStrain;
+    s.temperature = state.temperature;
+    s.damage = state.damage;
+    s.transient.assign(state.x.size(), 0);
+    for (const OversetEntry& e : ref.overset) s.transient[static_cast<std::size_t>(e.particle)] = 1;
+    s.bondDamage = brokenBondFraction(ref.pairs, state.bondIntact);
+    s.brokenBonds = brokenBonds(ref.pairs, state.bondIntact);
+    return s;
+}
+
 void writeSnapshot(const std::filesystem::path& path, const Reference& ref, const State& state,
                    const Provenance& provenance) {
+    const Snapshot s = snapshotOf(ref, state);
     writeAtomically(path, [&](const std::filesystem::path& temp) {
         h5::File f(temp, h5::File::Mode::Create);
         writeFormatVersion(f, kSnapshotFormat, kSnapshotFormatMajor, kSnapshotFormatMinor);
         writeProvenance(f, provenance);
-        const std::size_t n = state.x.size();
-        const double time = state.time;
-        const double step = static_cast<double>(state.step);
+        const double time = s.time;
+        const double step = static_cast<double>(s.step);
         f.write("/time", &time, {1});
         f.write("/step", &step, {1});
-        f.write("/particles/X", ref.X.data()->data(), {n, 3});
-        f.write("/particles/x", state.x.data()->data(), {n, 3});
-        f.write("/particles/v", state.v.data()->data(), {n, 3});
-        const std::vector<double> stress = rowMajor(state.cauchy);
-        const std::vector<double> F = rowMajor(state.F);
-        f.write("/particles/stress", stress.data(), {n, 9});
-        f.write("/particles/F", F.data(), {n, 9});
-        f.write("/particles/volume", ref.quadVolume.data(), {n});
-        f.write("/particles/body", ref.body.data(), {n});
-        f.write("/particles/space", ref.space.data(), {n});
-        f.write("/particles/plastic_strain", state.plasticStrain.data(), {n});
-        f.write("/particles/temperature", state.temperature.data(), {n});
-        f.write("/particles/damage", state.damage.data(), {n});
-        std::vector<std::int8_t> transient(n, 0);
-        for (const OversetEntry& e : ref.overset)
-            transient[static_cast<std::size_t>(e.particle)] = 1;
-        f.write("/particles/transient", transient.data(), {n});
-        const std::vector<double> bondDamage = brokenBondFraction(ref.pairs, state.bondIntact);
-        f.write("/particles/bond_damage", bondDamage.data(), {n});
-        const std::vector<std::array<Index, 2>> broken = brokenBonds(ref.pairs, state.bondIntact);
-        f.write("/bonds/broken", broken.empty() ? nullptr : broken.data()->data(),
-                {broken.size(), 2});
+        s.forEachField([&](const SnapshotField& field, const auto& array) {
+            const std::string name = std::string("/particles/") + field.name;
+            writeField(f, name, array);
+            f.setAttribute(name, "units", std::string(field.unit));
+        });
+        f.write("/bonds/broken", s.brokenBonds.empty() ? nullptr : s.brokenBonds.data()->data(),
+                {s.brokenBonds.size(), 2});
         f.close(path);
     });
 }
@@ -137,32 +194,23 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     std::vector<std::size_t> dims;
     s.time = f.read<double>("/time", dims).at(0);
     s.step = static_cast<long>(f.read<double>("/step", dims).at(0));
-    s.body = f.read<std::int32_t>("/particles/body", dims);
-    const std::size_t n = s.body.size();
-    s.space = f.read<std::int32_t>("/particles/space", dims);
-    if (s.space.size() != n)
-        throw IoError(path.string() + ": /particles/space has the wrong length");
-    s.X = readVectors(f, "/particles/X", n);
-    s.x = readVectors(f, "/particles/x", n);
-    s.v = readVectors(f, "/particles/v", n);
-    s.stress = fromRowMajor(readRows(f, "/particles/stress", n, 9));
-    s.F = fromRowMajor(readRows(f, "/particles/F", n, 9));
-    s.volume = f.read<double>("/particles/volume", dims);
-    if (s.volume.size() != n)
-        throw IoError(path.string() + ": /particles/volume has the wrong length");
-    s.plasticStrain = readScalars(f, "/particles/plastic_strain", n);
-    s.temperature = readScalars(f, "/particles/temperature", n);
-    s.damage = readScalars(f, "/particles/damage", n);
-    s.transient.assign(n, 0);
-    if (f.exists("/particles/transient")) {  // since 0.3
-        const std::vector<std::int8_t> t = f.read<std::int8_t>("/particles/transient", dims);
-        if (t.size() != n)
-            throw IoError(path.string() + ": /particles/transient has the wrong length");
-        for (std::size_t a = 0; a < n; ++a) s.transient[a] = t[a] != 0 ? 1 : 0;
-    }
-    s.bondDamage.assign(n, 0.0);
-    if (f.exists("/particles/bond_damage"))  // since 0.4
-        s.bondDamage = readScalars(f, "/particles/bond_damage", n);
+    // The particle count from the first field (X, N×3); every other field must agree.
+    f.read<double>("/particles/X", dims);
+    if (dims.size() != 2 || dims[1] != 3)
+        throw IoError(path.string() + ": /particles/X is not an N×3 array");
+    const std::size_t n = dims[0];
+    s.forEachField([&](const SnapshotField& field, auto& array) {
+        const std::string name = std::string("/particles/") + field.name;
+        if (field.sinceMinor > 0 && !f.exists(name)) {  // a file older than the field
+            using T = typename std::decay_t<decltype(array)>::value_type;
+            if constexpr (std::is_arithmetic_v<T>)
+                array.assign(n, T(0));
+            else
+                array.assign(n, T::Zero());
+            return;
+        }
+        readField(f, name, n, array);
+    });
     const std::vector<Index> broken = f.read<std::int32_t>("/bonds/broken", dims);
     if (dims.size() != 2 || dims[1] != 2)
         throw IoError(path.string() + ": /bonds/broken is not an M×2 array");
@@ -185,19 +233,7 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
             const Snapshot s = readSnapshot(path);
             w.value(s.time);
             w.value(s.step);
-            w.array(s.X);
-            w.array(s.x);
-            w.array(s.v);
-            w.array(s.stress);
-            w.array(s.F);
-            w.array(s.volume);
-            w.array(s.body);
-            w.array(s.space);
-            w.array(s.plasticStrain);
-            w.array(s.temperature);
-            w.array(s.damage);
-            w.array(s.transient);
-            w.array(s.bondDamage);
+            s.forEachField([&](const SnapshotField&, const auto& array) { w.array(array); });
             w.array(s.brokenBonds);
             writeProvenance(w, s.provenance);
         },
@@ -210,19 +246,9 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
     Snapshot s;
     s.time = r.value<double>();
     s.step = r.value<long>();
-    s.X = r.array<Vec3>();
-    s.x = r.array<Vec3>();
-    s.v = r.array<Vec3>();
-    s.stress = r.array<Mat3>();
-    s.F = r.array<Mat3>();
-    s.volume = r.array<double>();
-    s.body = r.array<Index>();
-    s.space = r.array<Index>();
-    s.plasticStrain = r.array<double>();
-    s.temperature = r.array<double>();
-    s.damage = r.array<double>();
-    s.transient = r.array<std::uint8_t>();
-    s.bondDamage = r.array<double>();
+    s.forEachField([&](const SnapshotField&, auto& array) {
+        array = r.array<typename std::decay_t<decltype(array)>::value_type>();
+    });
     s.brokenBonds = r.array<std::array<Index, 2>>();
     s.provenance = readProvenance(r);
     return s;

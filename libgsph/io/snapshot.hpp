@@ -1,20 +1,15 @@
 // SPDX-License-Identifier: MIT
 // Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
-// HDF5, format "gsph-snapshot" 0.4 (layout in
-// docs/formats.md). Written atomically (io/atomic_file.hpp).
+// HDF5, format "gsph-snapshot" 0.4 (layout in docs/formats.md). Written atomically
+// (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)
-//   /particles/X, x, v           N×3 reference position, position, velocity
-//   /particles/stress            N×9 Cauchy stress, row-major
-//   /particles/F                 N×9 deformation gradient, row-major
-//   /particles/volume            N reference quadrature volume ω det M [m³]
-//   /particles/body, space       N int32
-//   /particles/plastic_strain, temperature, damage   N float64
-//   /particles/transient         N int8: 1 if the particle has an overset entry (since 0.3;
-//                                absent in older files, read as 0)
-//   /particles/bond_damage       N float64: the share of the particle's bonds that broke (since
-//                                0.4; absent in older files, read as 0)
+//   /particles/NAME              one dataset per field of Snapshot::forEachField, with its
+//                                `units` attribute: N×3 (vectors), N×9 row-major (tensors), N
 //   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
+//
+// Snapshot::forEachField is the one list of the per-particle fields: the writer, both readers
+// and gsph-post's .vtu arrays iterate it, so a field added there is written, read and shown.
 #pragma once
 
 #include <array>
@@ -32,6 +27,16 @@ inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
 inline constexpr int kSnapshotFormatMinor = 4;
 
+/// A per-particle field of a snapshot.
+struct SnapshotField {
+    const char* name;  ///< dataset /particles/NAME
+    const char* unit;  ///< SI unit ("1": a number), the dataset's `units` attribute
+    int sinceMinor;    ///< the format 0.N that added it: older files read as zeros
+    /// The point-data array gsph-post writes for it in the .vtu (nullptr: none; the positions
+    /// are the points, and post derives displacement, J, von Mises and pressure).
+    const char* vtuName;
+};
+
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
     double time = 0.0;
@@ -48,7 +53,40 @@ struct Snapshot {
     std::vector<std::array<Index, 2>> brokenBonds;  ///< (a, b), a < b
     Provenance provenance;
     Index size() const { return static_cast<Index>(x.size()); }
+
+    /// Calls visit(field, array) for every per-particle array, in the files' order. Array types:
+    /// std::vector of Vec3, Mat3, double, Index or std::uint8_t (int8 on file).
+    template <class Visitor>
+    void forEachField(Visitor&& visit) {
+        visitFields(*this, visit);
+    }
+    template <class Visitor>
+    void forEachField(Visitor&& visit) const {
+        visitFields(*this, visit);
+    }
+
+  private:
+    template <class Self, class Visitor>
+    static void visitFields(Self& s, Visitor& visit) {
+        visit(SnapshotField{"X", "m", 0, nullptr}, s.X);
+        visit(SnapshotField{"x", "m", 0, nullptr}, s.x);
+        visit(SnapshotField{"v", "m/s", 0, "velocity"}, s.v);
+        visit(SnapshotField{"stress", "Pa", 0, "stress"}, s.stress);
+        visit(SnapshotField{"F", "1", 0, nullptr}, s.F);
+        visit(SnapshotField{"volume", "m^3", 0, "reference_volume"}, s.volume);
+        visit(SnapshotField{"body", "1", 0, "body"}, s.body);
+        visit(SnapshotField{"space", "1", 0, "space"}, s.space);
+        visit(SnapshotField{"plastic_strain", "1", 0, "plastic_strain"}, s.plasticStrain);
+        visit(SnapshotField{"temperature", "K", 0, "temperature"}, s.temperature);
+        visit(SnapshotField{"damage", "1", 0, "damage"}, s.damage);
+        visit(SnapshotField{"transient", "1", 3, "transient"}, s.transient);
+        visit(SnapshotField{"bond_damage", "1", 4, "bond_damage"}, s.bondDamage);
+    }
 };
+
+/// The snapshot of a run's state: the per-particle fields from the reference (X, volume ω det M,
+/// body, space, transient) and the state, the bonds' damage and the broken bonds.
+Snapshot snapshotOf(const Reference& ref, const State& state);
 
 /// 3×3 tensors as N×9 rows, row-major (σ_xx, σ_xy, σ_xz, σ_yx, …), the files' layout (Eigen
 /// stores column-major); and back. Exact copies, no arithmetic.

@@ -17,6 +17,7 @@
 #include <sstream>
 
 #include "core/error.hpp"
+#include "io/hdf5_file.hpp"
 #include "io/snapshot.hpp"
 #include "pictures.hpp"
 #include "support/sample_run.hpp"
@@ -60,15 +61,25 @@ TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
     ASSERT_EQ(grid->GetNumberOfCells(), snap.size());
     vtkPointData* pd = grid->GetPointData();
     const std::vector<std::pair<const char*, int>> arrays = {
-        {"displacement", 3},     {"velocity", 3}, {"stress", 9},
-        {"von_mises", 1},        {"pressure", 1}, {"plastic_strain", 1},
-        {"temperature", 1},      {"damage", 1},   {"J", 1},
-        {"reference_volume", 1}, {"body", 1},     {"space", 1},
-        {"transient", 1}};
+        {"displacement", 3},     {"velocity", 3},   {"stress", 9},
+        {"von_mises", 1},        {"pressure", 1},   {"plastic_strain", 1},
+        {"temperature", 1},      {"damage", 1},     {"J", 1},
+        {"reference_volume", 1}, {"body", 1},       {"space", 1},
+        {"transient", 1},        {"bond_damage", 1}};
     for (const auto& [name, components] : arrays) {
         ASSERT_NE(pd->GetArray(name), nullptr) << name;
         EXPECT_EQ(pd->GetArray(name)->GetNumberOfComponents(), components) << name;
     }
+    // The stress tensor's components carry their names, as ParaView lists them.
+    const char* const components[] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
+    for (int c = 0; c < 9; ++c)
+        EXPECT_STREQ(pd->GetArray("stress")->GetComponentName(c), components[c]) << c;
+    // Every per-particle dataset of the snapshot states its unit.
+    const h5::File file(*dir_ / "run/snapshot_000007.h5", h5::File::Mode::ReadOnly);
+    EXPECT_EQ(file.stringAttribute("/particles/v", "units"), "m/s");
+    EXPECT_EQ(file.stringAttribute("/particles/stress", "units"), "Pa");
+    EXPECT_EQ(file.stringAttribute("/particles/temperature", "units"), "K");
+    EXPECT_EQ(file.stringAttribute("/particles/volume", "units"), "m^3");
     auto scalar = [&](const char* name, vtkIdType a) { return pd->GetArray(name)->GetTuple1(a); };
     double worst = 0.0;
     for (vtkIdType a = 0; a < snap.size(); ++a) {
