@@ -184,12 +184,17 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     auto mises = namedArray<vtkDoubleArray>("von_mises", 1, n);
     auto pressure = namedArray<vtkDoubleArray>("pressure", 1, n);
     auto J = namedArray<vtkDoubleArray>("J", 1, n);
+    // The particle's index (what the solver's messages name) and a radius for ParaView's Point
+    // Gaussian: half the edge of a cube of its current volume, so neighbours' splats touch.
+    auto id = namedArray<vtkIntArray>("id", 1, n);
+    auto radius = namedArray<vtkDoubleArray>("radius", 1, n);
     // Filled through raw pointers: VTK's setters are not safe to call from several threads.
     double* X = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
     vtkIdType* off = offsets->GetPointer(0);
     vtkIdType* con = connectivity->GetPointer(0);
     double *u = displacement->GetPointer(0), *vm = mises->GetPointer(0),
-           *p = pressure->GetPointer(0), *detF = J->GetPointer(0);
+           *p = pressure->GetPointer(0), *detF = J->GetPointer(0), *r = radius->GetPointer(0);
+    int* ids = id->GetPointer(0);
     off[n] = n;
     parallelFor(n, [&](std::ptrdiff_t a) {
         const auto i = static_cast<std::size_t>(a);
@@ -202,6 +207,8 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
         vm[a] = vonMises(snap.stress[i]);
         p[a] = -snap.stress[i].trace() / 3.0;
         detF[a] = snap.F[i].determinant();
+        ids[a] = static_cast<int>(a);
+        r[a] = 0.5 * std::cbrt(snap.volume[i] * detF[a]);
     });
     vtkNew<vtkCellArray> cells;
     cells->SetData(offsets, connectivity);
@@ -209,7 +216,8 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     grid->SetPoints(points);
     grid->SetCells(VTK_VERTEX, cells);
     vtkPointData* pd = grid->GetPointData();
-    for (vtkDataArray* arr : std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J})
+    for (vtkDataArray* arr :
+         std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J, id, radius})
         pd->AddArray(arr);
     snap.forEachField([&](const SnapshotField& field, const auto& array) {
         if (field.vtuName != nullptr) pd->AddArray(fieldArray(field.vtuName, array));

@@ -101,6 +101,8 @@ TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
         EXPECT_EQ(scalar("temperature", a), snap.temperature[i]);
         EXPECT_EQ(scalar("damage", a), snap.damage[i]);
         EXPECT_EQ(scalar("J", a), snap.F[i].determinant());
+        EXPECT_EQ(scalar("id", a), static_cast<double>(a));
+        EXPECT_EQ(scalar("radius", a), 0.5 * std::cbrt(snap.volume[i] * snap.F[i].determinant()));
         EXPECT_EQ(scalar("reference_volume", a), snap.volume[i]);
         EXPECT_EQ(scalar("body", a), snap.body[i]);
         EXPECT_EQ(scalar("space", a), snap.space[i]);
