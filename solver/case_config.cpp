@@ -29,9 +29,10 @@ const toml::array* arrayOfTables(const std::string& file, const toml::table& roo
 void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const toml::table* run = root["run"].as_table();
     if (!run) throw InputError(file + ":1: missing table [run]");
-    const TomlKeys r(file, *run, "[run]",
-                     {"particles", "end_time", "output_interval", "cfl", "kappa", "viscosity",
-                      "hourglass", "checkpoint_interval", "min_dt_ratio", "gravity"});
+    const TomlKeys r(
+        file, *run, "[run]",
+        {"particles", "end_time", "output_interval", "history_interval", "cfl", "kappa",
+         "viscosity", "hourglass", "checkpoint_interval", "min_dt_ratio", "gravity"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -39,6 +40,7 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     if (c.particles.is_relative()) c.particles = c.caseFile.parent_path() / c.particles;
     c.endTime = r.number("end_time", Sign::Positive);
     c.outputInterval = r.number("output_interval", c.endTime / 10.0, Sign::Positive);
+    c.historyInterval = r.number("history_interval", c.endTime / 400.0, Sign::NonNegative);
     c.cfl = r.number("cfl", c.cfl, Sign::Positive);
     if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
     c.kappa = r.number("kappa", c.kappa, Sign::Positive);

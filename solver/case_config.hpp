@@ -78,6 +78,9 @@ struct CaseConfig {
     int particlesLine = 0;            ///< where [run] particles is set (for messages)
     double endTime = 0.0;             ///< [s]
     double outputInterval = 0.0;      ///< [s]
+    /// [s] between history.csv rows besides the snapshots' (default end_time / 400; 0: a row
+    /// per snapshot only).
+    double historyInterval = 0.0;
     double cfl = 0.3;
     double kappa = 1.2;
     ViscosityCoefficients viscosity{1.0, 1.0};

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
-// history.csv of a run (docs/formats.md): one row per snapshot, the columns defined in two
-// lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum) and kWallColumns
-// (repeated for every wall, named wall_<name>_<suffix>) — adding a column is one line there
-// and one line in docs/formats.md. The whole table is rewritten atomically at every flush, and
-// its text goes into checkpoints so that a restarted run writes the same file as an
-// uninterrupted one.
+// history.csv of a run (docs/formats.md): rows at snapshots and history intervals, the columns
+// defined in two lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum)
+// and kWallColumns (repeated for every wall, named wall_<name>_<suffix>) — adding a column is
+// one line there and one line in docs/formats.md. The whole table is rewritten atomically at
+// every flush, and its text goes into checkpoints so that a restarted run writes the same file
+// as an uninterrupted one.
 #pragma once
 
 #include <filesystem>

@@ -128,6 +128,7 @@ struct Schedule {
     long nextOutput = 1;      ///< k of the next scheduled snapshot time k·output_interval
     long nextSnapshot = 0;    ///< number of the next snapshot file
     long nextCheckpoint = 1;  ///< m of the next checkpoint time m·checkpoint_interval
+    long nextHistory = 1;     ///< j of the next history row time j·history_interval
 };
 
 // The files the run is built from, with their hashes (a restart must find them unchanged).
@@ -238,6 +239,7 @@ class RunOutputs {
         r.counters["next_output"] = schedule.nextOutput;
         r.counters["next_snapshot"] = schedule.nextSnapshot;
         r.counters["next_checkpoint"] = schedule.nextCheckpoint;
+        r.counters["next_history"] = schedule.nextHistory;
         // The intervals the counters count in: a restart with other intervals re-counts them.
         r.texts["output_interval"] = exactText(c_.outputInterval);
         r.texts["checkpoint_interval"] = exactText(c_.checkpointInterval);
@@ -258,17 +260,16 @@ class RunOutputs {
         schedule.nextOutput = counter(run, "next_output", file);
         schedule.nextSnapshot = counter(run, "next_snapshot", file);
         schedule.nextCheckpoint = counter(run, "next_checkpoint", file);
+        // Checkpoints written before history rows between snapshots existed have no counter.
+        schedule.nextHistory =
+            run.counters.count("next_history") != 0 ? counter(run, "next_history", file) : 1;
         const auto text = run.texts.find("history");
         if (text == run.texts.end())
             throw InputError(file.string() + ": checkpoint lacks the history");
         history_.restore(text->second, file.string());
         // Intervals changed on the command line (--output-interval, --checkpoint-interval):
         // the schedule goes on from the checkpoint's time in the new intervals.
-        const auto firstPast = [&](double interval) {
-            long k = std::max(1L, static_cast<long>(std::floor(time / interval)));
-            while (static_cast<double>(k) * interval <= time + reachedTolerance()) ++k;
-            return k;
-        };
+        const auto firstPast = [&](double interval) { return firstMultiplePast(time, interval); };
         const auto changed = [&](const char* key, double now) {
             const auto it = run.texts.find(key);
             return it != run.texts.end() && it->second != exactText(now);
@@ -277,6 +278,8 @@ class RunOutputs {
             schedule.nextOutput = firstPast(c_.outputInterval);
         if (changed("checkpoint_interval", c_.checkpointInterval) && c_.checkpointInterval > 0.0)
             schedule.nextCheckpoint = firstPast(c_.checkpointInterval);
+        if (run.counters.count("next_history") == 0 && c_.historyInterval > 0.0)
+            schedule.nextHistory = firstPast(c_.historyInterval);
         if (time >= c_.endTime - reachedTolerance()) {
             char at[64];
             std::snprintf(at, sizeof at, "%.6e", time);
@@ -284,11 +287,20 @@ class RunOutputs {
                              " s, already at its end time; give a later --end-time to continue it");
         }
     }
-    /// After every step: the progress bar, and a checkpoint at the first step at or past each
-    /// m·checkpoint_interval (none at the end time: the run is done then).
-    void afterStep(const State& s) {
+    /// After every step: the progress bar, a history row at the first step at or past each
+    /// j·history_interval (unless a snapshot, which writes its own row, ends this step), and a
+    /// checkpoint at the first step at or past each m·checkpoint_interval (none at the end
+    /// time: the run is done then). `outputTarget`: the time of the next snapshot.
+    void afterStep(const Simulation& sim, double outputTarget) {
+        const State& s = sim.state();
         progress_.update(s.time, s.step);
-        if (c_.checkpointInterval <= 0.0 || s.time >= c_.endTime - reachedTolerance()) return;
+        const double tol = reachedTolerance();
+        if (c_.historyInterval > 0.0 &&
+            s.time >= static_cast<double>(schedule.nextHistory) * c_.historyInterval - tol) {
+            if (s.time < outputTarget - tol) history_.add(s, sim.energy(), sim.wallForces());
+            schedule.nextHistory = firstMultiplePast(s.time, c_.historyInterval);
+        }
+        if (c_.checkpointInterval <= 0.0 || s.time >= c_.endTime - tol) return;
         const auto due = [&](long m) {
             return s.time >= static_cast<double>(m) * c_.checkpointInterval - reachedTolerance();
         };
@@ -303,6 +315,13 @@ class RunOutputs {
     }
     /// Tolerance of "this time is reached", as Simulation::advanceTo lands on its end time.
     double reachedTolerance() const { return 1e-12 * std::max(1.0, c_.endTime); }
+    /// The first k ≥ 1 with k·interval past `time` (counted from time/interval, so a tiny
+    /// interval does not spin).
+    long firstMultiplePast(double time, double interval) const {
+        long k = std::max(1L, static_cast<long>(std::floor(time / interval)));
+        while (static_cast<double>(k) * interval <= time + reachedTolerance()) ++k;
+        return k;
+    }
 
   private:
     const CaseConfig& c_;
@@ -502,7 +521,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
                 c.endTime, static_cast<double>(out.schedule.nextOutput) * c.outputInterval);
             last = target >= c.endTime * (1 - 1e-12);
             if (!sim.advanceTo(
-                    target, [&](const State& s) { out.afterStep(s); }, stop)) {
+                    target, [&](const State&) { out.afterStep(sim, target); }, stop)) {
                 // Stopped: the checkpoint resumes this interval; the snapshot shows the state
                 // (the restarted run rewrites its number with the scheduled snapshot).
                 out.checkpoint(sim.state());

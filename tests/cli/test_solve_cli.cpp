@@ -174,11 +174,17 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
                                                "momentum_y",
                                                "momentum_z"};
     EXPECT_EQ(header, expected);
-    ASSERT_EQ(rows.size(), 11u);
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
                                         header.begin());
     };
+    // history_interval (end_time / 400) is shorter than the step here: a row after every step,
+    // the snapshots' included, times increasing.
+    ASSERT_EQ(rows.size(), static_cast<std::size_t>(rows.back()[col("step")]) + 1);
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        EXPECT_EQ(rows[k][col("step")], rows[k - 1][col("step")] + 1);
+        EXPECT_GT(rows[k][col("time")], rows[k - 1][col("time")]);
+    }
     const double e0 = rows.front()[col("total_energy")];
     const double work = rows.back()[col("external_work")];
     EXPECT_GT(work, 1.0);
@@ -227,6 +233,39 @@ TEST(SolveCli, WallGravityAndSetForceCaseBalancesItsEnergy) {
     // Momentum: the set force and gravity act throughout; y momentum = M g_y t exactly (the
     // wall's friction acts along y and z only while the bar slides on it: bounded by μ N).
     EXPECT_LT(rows.back()[col("momentum_y")], 0.0);
+}
+
+// history_interval: a row at the first step at or past each j·1 µs, besides the snapshots' rows
+// (one row where both fall on the same step).
+TEST(SolveCli, HistoryIntervalWritesRowsBetweenSnapshots) {
+    TempDir dir;
+    const auto r = solveCaseText(
+        dir, "history.toml",
+        "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 1.0e-5\n"
+        "history_interval = 1.0e-6\n" +
+            kSteelBar + "velocity = [-5.0, 0.0, 0.0]\n");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(dir / "run" / "history.csv", header);
+    const std::size_t time = 0, dt = 2;
+    ASSERT_EQ(header[time], "time");
+    ASSERT_EQ(header[dt], "dt");
+    // Snapshots at 0, 10, 20, 30 µs; history rows at j = 1 … 29 µs but 10 and 20.
+    ASSERT_EQ(rows.size(), 4u + 27u);
+    std::size_t snapshots = 0, j = 1;
+    for (const auto& row : rows) {
+        const double t = row[time];
+        if (std::abs(t / 1e-5 - std::round(t / 1e-5)) < 1e-9) {
+            ++snapshots;
+            if (t > 0.0) ++j;  // its row stands for j·1 µs too
+            continue;
+        }
+        // The first step at or past j µs: within one step (the step size before this row's).
+        EXPECT_GE(t, j * 1e-6 - 1e-18) << j;
+        EXPECT_LT(t, j * 1e-6 + 1.5 * row[dt]) << j;
+        ++j;
+    }
+    EXPECT_EQ(snapshots, 4u);
 }
 
 // A pressure on the sample bar's "load" face (x = L, 1 cm²; gsph-preproc's face areas): the
@@ -354,8 +393,11 @@ TEST(SolveCli, HistoryHasEachWallsForceAndDisplacement) {
         EXPECT_EQ(row[col("wall_floor_fx")], 0.0);
         EXPECT_EQ(row[col("wall_floor_uy")], 0.0);
         EXPECT_EQ(row[col("wall_far_wall_2_fz")], 0.0);
-        EXPECT_NEAR(row[col("wall_far_wall_2_uy")], 0.5 * row[col("time")], 1e-15);
-        EXPECT_NEAR(row[col("wall_far_wall_2_uz")], 2.0 * row[col("time")], 1e-15);
+        // Both columns are printed to 9 significant digits.
+        EXPECT_NEAR(row[col("wall_far_wall_2_uy")], 0.5 * row[col("time")],
+                    1e-9 * 0.5 * row[col("time")]);
+        EXPECT_NEAR(row[col("wall_far_wall_2_uz")], 2.0 * row[col("time")],
+                    1e-9 * 2.0 * row[col("time")]);
     }
 }
 
