@@ -262,15 +262,25 @@ bool plotHistory(const HistoryTable& history, const std::vector<std::string>& wa
     window->SetSize(width, height);
     window->AddRenderer(renderer);
     chart->SetShowLegend(true);
+    // The legend beside the plot, not over the curves.
+    chart->GetLegend()->SetInline(false);
+    chart->GetLegend()->SetHorizontalAlignment(vtkChartLegend::RIGHT);
+    chart->GetLegend()->SetVerticalAlignment(vtkChartLegend::CENTER);
     chart->GetAxis(vtkAxis::BOTTOM)->SetTitle("time [s]");
     chart->GetAxis(vtkAxis::LEFT)->SetTitle(yTitle);
-    const unsigned char palette[8][3] = {{31, 119, 180},  {255, 127, 14},  {44, 160, 44},
-                                         {214, 39, 40},   {148, 103, 189}, {140, 86, 75},
-                                         {227, 119, 194}, {0, 0, 0}};
-    for (std::size_t p = 0; p < plotted.size(); ++p) {
+    // Ten distinct colours (Tableau's), enough for every energy column; the total in black.
+    const unsigned char palette[10][3] = {
+        {31, 119, 180}, {255, 127, 14},  {44, 160, 44},   {214, 39, 40},  {148, 103, 189},
+        {140, 86, 75},  {227, 119, 194}, {127, 127, 127}, {188, 189, 34}, {23, 190, 207}};
+    for (std::size_t p = 0, colour = 0; p < plotted.size(); ++p) {
         vtkPlot* line = chart->AddPlot(vtkChart::LINE);
         line->SetInputData(table, 0, static_cast<vtkIdType>(p + 1));
-        line->SetColor(palette[p % 8][0], palette[p % 8][1], palette[p % 8][2], 255);
+        if (plotted[p].first == "total_energy") {
+            line->SetColor(0, 0, 0, 255);
+        } else {
+            const unsigned char* c = palette[colour++ % 10];
+            line->SetColor(c[0], c[1], c[2], 255);
+        }
         line->SetWidth(2.0);
     }
     savePng(window, png);
