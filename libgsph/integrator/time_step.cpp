@@ -21,7 +21,12 @@ double stableTimeStep(const Reference& ref, const State& state, const TimeStepRu
         // Springs in parallel: ω² = (2/wave)² + ω_contact², Δt = CFL · 2/ω.
         return 1.0 / std::sqrt(1.0 / (wave * wave) + 0.25 * frequency2[ia]);
     };
-    const double ratio = parallelMin(ref.size(), std::numeric_limits<double>::infinity(), ratioOf);
+    // A NaN ratio (a NaN velocity or sound speed) counts as −1: min() would pass over it.
+    const double ratio =
+        parallelMin(ref.size(), std::numeric_limits<double>::infinity(), [&](Index a) {
+            const double r = ratioOf(a);
+            return std::isnan(r) ? -1.0 : r;
+        });
     const double dt = rule.cfl * ratio;
     const double floor = rule.minTimeStepRatio * state.initialDt;
     if (ratio > 0.0 && std::isfinite(ratio) && !(dt < floor)) return dt;

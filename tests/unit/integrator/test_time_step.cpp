@@ -50,6 +50,15 @@ TEST(TimeStep, FixedStepAndTheCollapseGuard) {
         EXPECT_NE(std::string(e.what()).find("time step collapsed"), std::string::npos) << e.what();
         EXPECT_NE(std::string(e.what()).find("particle 2 at X"), std::string::npos) << e.what();
     }
+    // A NaN velocity is named, not passed over by the minimum.
+    f.state.v[1] = Vec3(std::nan(""), 0.0, 0.0);
+    try {
+        stableTimeStep(f.ref, f.state, {0.3, 0.0, 0.0}, f.length, f.speed, {});
+        FAIL() << "a NaN velocity must throw";
+    } catch (const NumericalError& e) {
+        EXPECT_NE(std::string(e.what()).find("particle 1 at X"), std::string::npos) << e.what();
+    }
+    f.state.v[1] = Vec3::Zero();
     f.length.assign(3, 0.0);  // no spacing left: Δt = 0
     EXPECT_THROW(stableTimeStep(f.ref, f.state, {0.3, 0.0, 0.0}, f.length, f.speed, {}),
                  NumericalError);
