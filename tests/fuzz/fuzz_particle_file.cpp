@@ -10,7 +10,8 @@
 //     small valid particle files);
 //   * otherwise (structure-aware): FuzzedDataProvider picks one of three valid seed files, turns
 //     it into its datasets and attributes, mutates them (lengths, shapes, element types, counts,
-//     /spaces/cells up to 2^31−1, indices out of range, NaN, negative volumes, missing datasets)
+//     /spaces/cells up to 2^31−1, indices out of range, NaN, negative volumes, missing datasets,
+//     /set_areas of wrong lengths or of sets that do not exist)
 //     and writes them with the project's h5 layer, so that sizes can disagree; then it may flip
 //     a few bytes of the written file.
 // GSPH_FUZZ_SAVE=FILE keeps a copy of the last particle file written (to turn a finding into a
@@ -65,6 +66,7 @@ ParticleFile twoBodies() {
     f.bodies = {{"plate", 1}, {"projectile", 2}};
     f.sets["clamp"] = {0, 2};
     f.sets["tip"] = {4, 5, 6};
+    f.setAreas["tip"] = {Vec3(1e-6, 0.0, 0.0), Vec3(0.0, 1e-6, 0.0), Vec3(0.0, 0.0, -1e-6)};
     f.provenance = {"gsph-fuzz", "0", "plate.geo", std::string(64, 'a'), "", "SI"};
     return f;
 }
@@ -184,6 +186,9 @@ std::vector<Dataset> datasetsOf(const ParticleFile& f) {
     out.push_back(column("/bodies/source_tag", T::I32, tags.data(), tags.size(), 0));
     for (const auto& [name, members] : f.sets)
         out.push_back(column("/sets/" + name, T::I32, members.data(), members.size(), 0));
+    for (const auto& [name, areas] : f.setAreas)
+        out.push_back(column("/set_areas/" + name, T::F64,
+                             areas.empty() ? nullptr : areas[0].data(), areas.size(), 3));
     if (!f.transient.empty()) {
         const auto& o = f.overset;
         out.push_back(column("/particles/transient", T::I8, f.transient.data(), n, 0));
@@ -292,10 +297,20 @@ void mutate(FuzzedDataProvider& in, std::vector<Dataset>& data) {
         case 7:  // drop it
             data.erase(data.begin() + (&d - data.data()));
             return;
-        default: {  // a set with an odd name or odd members
-            const char* names[] = {"/sets/.", "/sets/x y", "/sets/big", "/sets/neg"};
-            Dataset set{names[in.ConsumeIntegralInRange(0, 3)], Dataset::Type::I32, {2}, {}, {}};
-            set.values = {specialValue(in, set), specialValue(in, set)};
+        default: {  // a set with an odd name or odd members, or face areas of a set that may not
+                    // exist (clamp is one of twoBodies(), none never is)
+            const char* names[] = {"/sets/.",   "/sets/x y",        "/sets/big",
+                                   "/sets/neg", "/set_areas/clamp", "/set_areas/none"};
+            const std::size_t pick = in.ConsumeIntegralInRange<std::size_t>(0, 5);
+            Dataset set{names[pick], Dataset::Type::I32, {2}, {}, {}};
+            if (pick >= 4) {
+                set.type = Dataset::Type::F64;
+                set.dims = {2, 3};
+                set.values.assign(6, 1e-6);
+                set.values[in.ConsumeIntegralInRange<std::size_t>(0, 5)] = specialValue(in, set);
+            } else {
+                set.values = {specialValue(in, set), specialValue(in, set)};
+            }
             data.push_back(set);
             return;
         }
