@@ -29,10 +29,10 @@ const toml::array* arrayOfTables(const std::string& file, const toml::table& roo
 void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const toml::table* run = root["run"].as_table();
     if (!run) throw InputError(file + ":1: missing table [run]");
-    const TomlKeys r(
-        file, *run, "[run]",
-        {"particles", "end_time", "output_interval", "history_interval", "cfl", "kappa",
-         "viscosity", "hourglass", "checkpoint_interval", "min_dt_ratio", "gravity"});
+    const TomlKeys r(file, *run, "[run]",
+                     {"particles", "end_time", "output_interval", "history_interval", "cfl",
+                      "kappa", "viscosity", "viscosity_switch", "hourglass", "checkpoint_interval",
+                      "min_dt_ratio", "gravity"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -47,8 +47,11 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     if (r.has("viscosity")) {
         const std::vector<double> beta = r.numbers("viscosity", 2);
         if (beta[0] < 0.0 || beta[1] < 0.0) r.fail("viscosity", "'viscosity' in [run] must be ≥ 0");
-        c.viscosity = {beta[0], beta[1]};
+        c.viscosity.linear = beta[0];
+        c.viscosity.quadratic = beta[1];
     }
+    c.viscosity.switchMach =
+        r.number("viscosity_switch", c.viscosity.switchMach, Sign::NonNegative);
     c.hourglass = r.number("hourglass", c.hourglass, Sign::NonNegative);
     c.checkpointInterval = r.number("checkpoint_interval", c.outputInterval, Sign::NonNegative);
     c.minDtRatio = r.number("min_dt_ratio", c.minDtRatio, Sign::NonNegative);
@@ -113,7 +116,12 @@ SetSpec readSet(const std::string& file, const toml::table& t) {
     SetSpec s;
     s.line = r.line();
     s.name = r.text("name");
-    s.fixed = r.flag("fixed", false);
+    if (const auto axes = r.axes("fixed")) {
+        s.fixed = true;
+        s.holds = *axes;
+    } else {
+        s.fixed = r.flag("fixed", false);
+    }
     if (r.has("force") && (s.fixed || r.has("velocity")))
         r.fail("force", "set '" + s.name +
                             "' has a 'force' and a kinematic condition (fixed or "

@@ -4,6 +4,7 @@
 // Unknown keys are errors (a misspelt key must never be silently ignored).
 #pragma once
 
+#include <array>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,7 +31,10 @@ struct SetSpec {
     enum class Kind { Fixed, Velocity, Force, Pressure };
     std::string name;  ///< named particle set of the particle file
     Kind kind = Kind::Fixed;
-    bool fixed = false;            ///< v = 0
+    bool fixed = false;  ///< v = 0 on the held components
+    /// The components `fixed` holds (x, y, z): all for `fixed = true`; those listed for
+    /// `fixed = ["x", …]` (a symmetry plane or roller).
+    std::array<bool, 3> holds = {true, true, true};
     Vec3 velocity = Vec3::Zero();  ///< prescribed velocity [m/s] (Kind::Velocity)
     Vec3 force = Vec3::Zero();     ///< total force on the set, shared by mass [N] (Kind::Force)
     /// (t [s], p [Pa]) points of the pressure on the set's faces (Kind::Pressure,
@@ -83,7 +87,7 @@ struct CaseConfig {
     double historyInterval = 0.0;
     double cfl = 0.3;
     double kappa = 1.2;
-    ViscosityCoefficients viscosity{1.0, 1.0};
+    ViscosityCoefficients viscosity = kDefaultViscosity;
     double hourglass = 0.1;
     /// [s] of simulated time between checkpoints (default: output_interval; 0 = only on a
     /// signal).

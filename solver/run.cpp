@@ -113,7 +113,7 @@ SetConditions matchSets(const CaseConfig& c, const ParticleFile& file) {
             out.pressures.push_back({s.name, it->second, areas->second, s.pressure});
             continue;
         }
-        VelocityConstraint vc{s.name, it->second, {}};
+        VelocityConstraint vc{s.name, it->second, {}, s.holds};
         if (s.kind == SetSpec::Kind::Velocity) {
             const Vec3 v = s.velocity;
             vc.velocity = [v](double, const Vec3&) { return v; };

@@ -8,6 +8,7 @@
 
 #include <toml++/toml.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -111,6 +112,25 @@ class TomlKeys {
         const std::optional<bool> v = n->value<bool>();
         if (!v) fail(key, "'" + key + "' in " + where_ + " must be true or false");
         return *v;
+    }
+
+    /// A list of distinct axis names "x", "y", "z" (at least one), as a mask; empty when the key
+    /// is absent or not a list.
+    std::optional<std::array<bool, 3>> axes(const std::string& key) const {
+        const toml::node* n = table_.get(key);
+        const toml::array* arr = n ? n->as_array() : nullptr;
+        if (!arr) return std::nullopt;
+        const std::string what =
+            "'" + key + "' in " + where_ + " must be a list of distinct axes \"x\", \"y\", \"z\"";
+        if (arr->empty()) fail(key, what);
+        std::array<bool, 3> mask = {false, false, false};
+        for (const toml::node& e : *arr) {
+            const std::optional<std::string> v = e.value<std::string>();
+            const std::size_t axis = !v || v->size() != 1 ? 3 : std::string("xyz").find((*v)[0]);
+            if (axis > 2 || mask[axis]) fail(key, what);
+            mask[axis] = true;
+        }
+        return mask;
     }
 
     /// A list of exactly `size` numbers.

@@ -21,7 +21,9 @@ void applyConstraints(const std::vector<VelocityConstraint>& constraints, const 
     for (const VelocityConstraint& c : constraints)
         for (Index a : c.particles) {
             const auto ia = static_cast<std::size_t>(a);
-            state.v[ia] = c.at(t, ref.X[ia]);
+            const Vec3 v = c.at(t, ref.X[ia]);
+            for (int r = 0; r < 3; ++r)
+                if (c.holds[static_cast<std::size_t>(r)]) state.v[ia][r] = v[r];
         }
 }
 
@@ -35,7 +37,10 @@ double reactionPower(const std::vector<VelocityConstraint>& constraints, const R
             const auto ia = static_cast<std::size_t>(a);
             const Vec3 accel =
                 (c.at(state.time + eps, ref.X[ia]) - c.at(state.time - eps, ref.X[ia])) / (2 * eps);
-            power += (ref.mass[ia] * accel - force[ia]).dot(state.v[ia]);
+            Vec3 reaction = ref.mass[ia] * accel - force[ia];
+            for (int r = 0; r < 3; ++r)
+                if (!c.holds[static_cast<std::size_t>(r)]) reaction[r] = 0.0;
+            power += reaction.dot(state.v[ia]);
         }
     }
     return power;

@@ -19,7 +19,7 @@ struct ForceView {
     std::array<const double*, 9> K, N, F;
     const Mat3* G;  // per particle (bonds may have changed it)
     std::array<const double*, 3> x, v, X;
-    const double *h, *c, *rho, *V;
+    const double *h, *c, *rho, *alpha, *V;
     const KernelEntry* table;
     ViscosityCoefficients viscosity;
     double alphaE;  // α E of the hourglass penalty [Pa]
@@ -86,7 +86,8 @@ template <bool Viscous, bool Hourglass, class L, class Load>
             const L q = viscousPairPressure<L>(in.viscosity, vx, x2,
                                                0.5 * (load(in.h + a) + load(in.h + b)),
                                                0.5 * (load(in.c + a) + load(in.c + b)),
-                                               0.5 * (load(in.rho + a) + load(in.rho + b)));
+                                               0.5 * (load(in.rho + a) + load(in.rho + b)),
+                                               0.5 * (load(in.alpha + a) + load(in.alpha + b)));
             const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
             for (std::size_t r = 0; r < 3; ++r) {
                 sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
@@ -229,10 +230,10 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
         }
         const Vec3 xcb = xc - pf.x[b];
         if constexpr (Viscous) {
-            const double q =
-                viscousPairPressure(in.viscosity, (vc - pf.v[b]).dot(xcb), xcb.squaredNorm(),
-                                    0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
-                                    0.5 * (in.rho[ic] + in.rho[b]));
+            const double q = viscousPairPressure(
+                in.viscosity, (vc - pf.v[b]).dot(xcb), xcb.squaredNorm(),
+                0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
+                0.5 * (in.rho[ic] + in.rho[b]), 0.5 * (in.alpha[ic] + in.alpha[b]));
             sumQW += q * e.gradW;
             if (!across) fN.noalias() += q * (sf.N[b] * e.gradW);
         }
@@ -258,10 +259,10 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
             fK.noalias() -= sf.K[b] * e.gradW;
         const Vec3 xbc = pf.x[b] - xc;
         if constexpr (Viscous) {
-            const double q =
-                viscousPairPressure(in.viscosity, (pf.v[b] - vc).dot(xbc), xbc.squaredNorm(),
-                                    0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
-                                    0.5 * (in.rho[ic] + in.rho[b]));
+            const double q = viscousPairPressure(
+                in.viscosity, (pf.v[b] - vc).dot(xbc), xbc.squaredNorm(),
+                0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
+                0.5 * (in.rho[ic] + in.rho[b]), 0.5 * (in.alpha[ic] + in.alpha[b]));
             fN.noalias() -= q * (sf.N[b] * e.gradW);
         }
         if constexpr (Hourglass) {
@@ -304,13 +305,21 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds,
                    const Mat3* G) {
-    const ForceView in{components(factors.K),     components(factors.N),
-                       components(fields.F),      G != nullptr ? G : ref.G.data(),
-                       components(fields.x),      components(fields.v),
-                       components(fields.X),      ref.smoothingLength.data(),
-                       factors.soundSpeed.data(), factors.density.data(),
-                       ref.quadVolume.data(),     ref.pairs.table.data(),
-                       options.viscosity,         options.hourglass * options.youngsModulus};
+    const ForceView in{components(factors.K),
+                       components(factors.N),
+                       components(fields.F),
+                       G != nullptr ? G : ref.G.data(),
+                       components(fields.x),
+                       components(fields.v),
+                       components(fields.X),
+                       ref.smoothingLength.data(),
+                       factors.soundSpeed.data(),
+                       factors.density.data(),
+                       factors.viscositySwitch.data(),
+                       ref.quadVolume.data(),
+                       ref.pairs.table.data(),
+                       options.viscosity,
+                       options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();
     const bool hourglass = options.hourglass != 0.0;
     if (viscous && hourglass)

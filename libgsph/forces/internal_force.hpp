@@ -35,11 +35,14 @@ struct StressFactors {
     Mat3Field N;                     ///< V J F^{-T} G
     std::vector<double> soundSpeed;  ///< c [m/s]
     std::vector<double> density;     ///< ρ0/J [kg/m³]
+    /// α of the viscosity's compression switch (forces/artificial_viscosity.hpp; 1 when off)
+    std::vector<double> viscositySwitch;
     void resize(std::size_t n) {
         K.resize(n);
         N.resize(n);
         soundSpeed.resize(n);
         density.resize(n);
+        viscositySwitch.assign(n, 1.0);
     }
 };
 

@@ -40,7 +40,14 @@ struct KinematicsStep {
     Mat3 outOfPlane;
     const BrittleBonds& bonds;
     const Mat3* G;  // per particle: the reference's, or recomputed over surviving bonds
+    const ViscosityCoefficients& viscosity;
 };
+
+// The viscosity's compression switch from the step's tr D (0: at rest, detached).
+void storeSwitch(KinematicsStep& s, std::size_t ia, double trD) {
+    s.factors.viscositySwitch[ia] =
+        viscositySwitch(s.viscosity, s.ref.smoothingLength[ia], trD, s.factors.soundSpeed[ia]);
+}
 
 // The factors the force loop reads, from F and σ at t_{n+1}:
 // P = J σ F^{-T} (DESIGN §4); N = V J F^{-T} G = V (cof F) G, K = σ N = V P G.
@@ -98,6 +105,7 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
         s.damageDissipation[ia] = volume * point.damageDissipation;
     }
     storeFactors(model, s, ia, F, point);
+    storeSwitch(s, ia, L.trace());
 }
 
 // A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
@@ -123,6 +131,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     s.factors.density[ia] = point.density;
     s.factors.soundSpeed[ia] = model.waveSpeed(point);
     s.fields.F.set(ia, s.state.F[ia]);
+    storeSwitch(s, ia, 0.0);
     s.lengthScale[ia] = s.ref.spacing[ia];
     s.failure[ia] = 0;
     if (!s.plasticWork.empty()) s.plasticWork[ia] = s.damageDissipation[ia] = 0.0;
@@ -143,6 +152,7 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
             MaterialPoint point;
             point.cauchy = s.state.cauchy[ia];
             storeFactors(model, s, ia, s.state.F[ia], point);
+            storeSwitch(s, ia, 0.0);
         }
     } else if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
         BlockThetaGradients g;
@@ -168,8 +178,8 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
 }  // namespace
 
 StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& bodies,
-                           const BrittleBonds& bonds)
-    : ref_(ref), bodies_(bodies), bonds_(bonds) {
+                           const BrittleBonds& bonds, const ViscosityCoefficients& viscosity)
+    : ref_(ref), bodies_(bodies), bonds_(bonds), viscosity_(viscosity) {
     const auto n = static_cast<std::size_t>(ref.size());
     factors_.resize(n);
     fields_.resize(n);
@@ -200,7 +210,8 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      atRest,
                      ref_.dim.outOfPlane(),
                      bonds_,
-                     bonds_.G().data()};
+                     bonds_.G().data(),
+                     viscosity_};
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const StencilBlocks& blocks = blocks_[b];
         std::visit(

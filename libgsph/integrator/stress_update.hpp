@@ -7,7 +7,8 @@
 //      by failing particles; a particle detached by broken bonds releases the elastic energy its
 //      stress held as fracture energy (failure/brittle_bonds.hpp)
 // and from F_{n+1}, σ_{n+1} the factors the internal force reads (K = V P G, N = V J F^{-T} G,
-// sound speed, density) and each particle's current spacing ℓ_a for the time step.
+// sound speed, density, the viscosity's compression switch α from tr D) and each particle's
+// current spacing ℓ_a for the time step.
 // Reads the SoA x, v that pack() copied during the drift. Allocation-free after construction.
 // Keeps nothing across steps that the State does not hold.
 #pragma once
@@ -26,9 +27,9 @@ namespace gsph {
 
 class StressUpdate {
   public:
-    /// `bodies` and `bonds` must outlive it.
+    /// `bodies` and `bonds` must outlive it; `viscosity` sets the compression switch.
     StressUpdate(const Reference& ref, const std::vector<BodyRange>& bodies,
-                 const BrittleBonds& bonds);
+                 const BrittleBonds& bonds, const ViscosityCoefficients& viscosity = {});
 
     /// SoA copies of x_a and v_a for the stencil loops.
     void pack(const State& state, Index a) {
@@ -57,6 +58,7 @@ class StressUpdate {
     const Reference& ref_;
     const std::vector<BodyRange>& bodies_;
     const BrittleBonds& bonds_;
+    ViscosityCoefficients viscosity_;
     StressFactors factors_;
     ParticleFields fields_;
     std::vector<StencilBlocks> blocks_;

@@ -34,6 +34,8 @@ void checkOptions(const SolverOptions& o) {
     if (o.hourglass < 0.0) throw InputError("hourglass coefficient must be ≥ 0");
     if (o.viscosity.linear < 0.0 || o.viscosity.quadratic < 0.0)
         throw InputError("artificial viscosity coefficients must be ≥ 0");
+    if (!(o.viscosity.switchMach >= 0.0))
+        throw InputError("the viscosity switch's Mach number M0 must be ≥ 0 (0 = off)");
 }
 
 TimeStepRule timeStepRule(const SolverOptions& o) {
@@ -53,7 +55,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       bonds_(ref, byParticle(ref, options_.bondStretch, 0.0),
              byParticle(ref, options_.failedBonds, FailedBondRule::Keep),
              !options_.precracks.empty()),
-      stress_(ref, bodies_, bonds_) {
+      stress_(ref, bodies_, bonds_, options_.viscosity) {
     checkOptions(options_);
     checkConstraints(constraints_, ref);
     const auto n = static_cast<std::size_t>(ref.size());

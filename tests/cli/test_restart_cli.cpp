@@ -309,8 +309,10 @@ long particleNamedIn(const std::string& err) {
 
 TEST_F(Restart, InvertedParticleStopsTheRunNamingIt) {
     // 10 km/s at a Courant number of 0.9: within a step the shock folds a particle (J ≤ 0).
-    const fs::path caseFile =
-        crushedBarCase(dir_, "inverted.toml", "1.0e4", "cfl = 0.9\nmin_dt_ratio = 0");
+    // (With the viscosity's compression switch the driven layer is crushed ever thinner
+    // instead, the case of the next test: the constant coefficients keep this one.)
+    const fs::path caseFile = crushedBarCase(dir_, "inverted.toml", "1.0e4",
+                                             "cfl = 0.9\nmin_dt_ratio = 0\nviscosity_switch = 0");
     const auto r = runCommand(solve(caseFile, particles_, dir_ / "run"));
     EXPECT_EQ(r.status, kExitNumerical) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;

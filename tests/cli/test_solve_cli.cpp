@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/particle_file.hpp"
 #include "io/snapshot.hpp"
 #include "support/csv.hpp"
 #include "support/h5_compare.hpp"
@@ -66,6 +67,9 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"missing_particles.toml", "no_such_particles.h5", 0},
         {"negative_end_time.toml", "'end_time' in [run] must be > 0", 3},
         {"fixed_and_velocity.toml", "is both fixed and given a velocity", 18},
+        {"fixed_bad_axis.toml",
+         "'fixed' in [[set]] must be a list of distinct axes \"x\", \"y\", \"z\"", 17},
+        {"negative_viscosity_switch.toml", "'viscosity_switch' in [run] must be ≥ 0", 4},
         {"unknown_table.toml", "unknown table 'walls'", 15},
         {"density_not_a_number.toml", "'density' in [[material]] must be a number", 7},
         {"no_body.toml", "no [[body]] defined", 0},
@@ -268,36 +272,48 @@ TEST(SolveCli, HistoryIntervalWritesRowsBetweenSnapshots) {
     EXPECT_EQ(snapshots, 4u);
 }
 
-// A pressure on the sample bar's "load" face (x = L, 1 cm²; gsph-preproc's face areas): the
-// momentum is the impulse −p A t (up to the face's lateral strains) and the energy balances.
-// A particle file without face areas (the bundled format-1.1 one) gets a one-line refusal.
-TEST(SolveCli, PressureOnASetPushesWithItsImpulseAndBalancesItsEnergy) {
-    TempDir dir;
+// The sample bar pushed by a pressure on its "load" face (x = L, 1 cm²; gsph-preproc's face
+// areas) ramped to 10 MPa over 1 µs, for 10 µs, with `extra` appended to the case: the final
+// momentum against the impulse −p A t = −1e7 · 1e-4 · (0.5e-6 + 9e-6), and the energy drift.
+struct PushedBar {
+    Vec3 momentum;
+    double impulse = -1e7 * 1e-4 * 9.5e-6;
+    double external = 0.0, drift = 0.0;
+};
+PushedBar pushBarWithPressure(const TempDir& dir, const std::string& extra) {
     const std::string text =
         "[run]\nparticles = \"particles.h5\"\nend_time = 1.0e-5\noutput_interval = 1.0e-6\n"
         "viscosity = [0.05, 1.0]\n" +
-        kSteelBar + "[[set]]\nname = \"load\"\npressure = [[0.0, 0.0], [1.0e-6, 1.0e7]]\n";
-    const auto r = solveCaseText(dir, "pressure.toml", text);
-    ASSERT_EQ(r.status, 0) << r.err;
+        kSteelBar + "[[set]]\nname = \"load\"\npressure = [[0.0, 0.0], [1.0e-6, 1.0e7]]\n" + extra;
+    const auto r = solveCaseText(dir, "pushed.toml", text);
+    EXPECT_EQ(r.status, 0) << r.err;
     std::vector<std::string> header;
     const auto rows = readCsv(dir / "run" / "history.csv", header);
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
                                         header.begin());
     };
+    PushedBar out;
     const auto& last = rows.back();
-    // ∫ p dt over the ramp to 1 µs and the plateau to 10 µs: 1e7 (0.5e-6 + 9e-6).
-    const double impulse = -1e7 * 1e-4 * 9.5e-6;
-    const double external = last[col("external_work")];
+    out.momentum = Vec3(last[col("momentum_x")], last[col("momentum_y")], last[col("momentum_z")]);
+    out.external = last[col("external_work")];
+    out.drift = last[col("total_energy")] - rows.front()[col("total_energy")];
+    return out;
+}
+
+// The pressure's momentum is its impulse (up to the face's lateral strains) and the energy
+// balances. A particle file without face areas (the bundled format-1.1 one) gets a one-line
+// refusal.
+TEST(SolveCli, PressureOnASetPushesWithItsImpulseAndBalancesItsEnergy) {
+    TempDir dir;
+    const PushedBar bar = pushBarWithPressure(dir, "");
     std::printf(
         "[pressure cli] momentum_x %.6e vs −p A t %.6e; external work %.4e J, energy "
         "drift %.2e J\n",
-        last[col("momentum_x")], impulse, external,
-        last[col("total_energy")] - rows.front()[col("total_energy")]);
-    EXPECT_NEAR(last[col("momentum_x")] / impulse, 1.0, 5e-5);  // measured 1.6e-5
-    EXPECT_GT(external, 0.0);
-    EXPECT_LT(std::abs(last[col("total_energy")] - rows.front()[col("total_energy")]),
-              1e-5 * external);  // measured 2.4e-6
+        bar.momentum[0], bar.impulse, bar.external, bar.drift);
+    EXPECT_NEAR(bar.momentum[0] / bar.impulse, 1.0, 5e-5);  // measured 1.6e-5
+    EXPECT_GT(bar.external, 0.0);
+    EXPECT_LT(std::abs(bar.drift), 1e-5 * bar.external);  // measured 2.4e-6
 
     TempDir old;
     std::ofstream(old / "pressure.toml")
@@ -309,6 +325,28 @@ TEST(SolveCli, PressureOnASetPushesWithItsImpulseAndBalancesItsEnergy) {
     EXPECT_EQ(refused.status, 1);
     EXPECT_NE(refused.err.find("a pressure on set 'load' needs its face areas"), std::string::npos)
         << refused.err;
+}
+
+// A roller (`fixed = ["y", "z"]`) on the far end holds its particles' lateral velocity at zero
+// and takes no axial force: the pressure's impulse still goes whole into the axial momentum,
+// the roller does no work, and its particles never move sideways.
+TEST(SolveCli, RollerSetHoldsOnlyItsComponents) {
+    TempDir dir;
+    const PushedBar bar =
+        pushBarWithPressure(dir, "[[set]]\nname = \"clamp\"\nfixed = [\"y\", \"z\"]\n");
+    std::printf(
+        "[roller cli] momentum_x %.6e vs −p A t %.6e; energy drift %.2e of the external "
+        "work\n",
+        bar.momentum[0], bar.impulse, bar.drift / bar.external);
+    EXPECT_NEAR(bar.momentum[0] / bar.impulse, 1.0, 5e-5);
+    EXPECT_LT(std::abs(bar.drift), 1e-5 * bar.external);
+    const ParticleFile particles = readParticleFile(dir / "particles.h5");
+    const Snapshot last = readSnapshot(dir / "run" / "snapshot_000010.h5");
+    for (Index a : particles.sets.at("clamp")) {
+        const Vec3& v = last.v[static_cast<std::size_t>(a)];
+        EXPECT_EQ(v[1], 0.0);
+        EXPECT_EQ(v[2], 0.0);
+    }
 }
 
 // The Taylor bar's shape does not depend on the thread count. The sample case on a
@@ -340,14 +378,15 @@ TEST(SolveCli, TaylorBarIsBitIdenticalOnOneAndTwoThreads) {
 
 // The per-wall columns of history.csv: the graded bar (M = 0.0785 kg) laid on a floor under
 // g = 2e4 m/s² rings on its contact springs; the floor's force column integrated over the rows
-// (trapezoid) is the momentum it gave, Δp_y + M g T, and on average it carries M g. A second wall,
+// (trapezoid) is the momentum it gave, Δp_y + M g T, and on average it carries M g (the constant
+// viscosity, without its compression switch, damps the ringing so that it rests). A second wall,
 // far away and moving, has zero force and displacement velocity·t; its name is sanitised.
 TEST(SolveCli, HistoryHasEachWallsForceAndDisplacement) {
     TempDir dir;
     const auto r = solveCaseText(
         dir, "floor.toml",
         "[run]\nparticles = \"particles.h5\"\nend_time = 3.0e-5\noutput_interval = 2.0e-7\n"
-        "gravity = [0.0, -2.0e4, 0.0]\n" +
+        "gravity = [0.0, -2.0e4, 0.0]\nviscosity_switch = 0\n" +
             kSteelBar +
             "[[wall]]\nname = \"floor\"\npoint = [0.0, 0.0, 0.0]\nnormal = [0.0, 1.0, 0.0]\n"
             "[[wall]]\nname = \"far wall-2\"\nshape = \"cylinder\"\npoint = [0.0, 0.0, 1.0]\n"
