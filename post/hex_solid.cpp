@@ -243,6 +243,12 @@ double HexSolid::particleVolume(const Snapshot& s) const {
     return total;
 }
 
+double HexSolid::currentVolume(const Snapshot& s) const {
+    double total = 0.0;
+    for (const SolidPiece& p : pieces_) total += hexahedraVolume(p, currentNodes(p, s));
+    return total;
+}
+
 std::vector<Vec3> HexSolid::currentNodes(const SolidPiece& piece, const Snapshot& s) const {
     std::vector<Vec3> x(piece.nodeX.size(), Vec3::Zero());
     for (std::size_t h = 0; h < piece.hexes.size(); ++h) {

@@ -59,6 +59,9 @@ class HexSolid {
     /// Σ V_a det F_a of a snapshot, V from the particle file [m³].
     double particleVolume(const Snapshot& snapshot) const;
 
+    /// Σ of the hexahedra's exact volumes at a snapshot's current nodes [m³].
+    double currentVolume(const Snapshot& snapshot) const;
+
     /// Current positions of a piece's nodes in a snapshot (see the header comment).
     std::vector<Vec3> currentNodes(const SolidPiece& piece, const Snapshot& snapshot) const;
 

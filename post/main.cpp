@@ -266,8 +266,7 @@ int main(int argc, char** argv) {
         const double cpuStart = cpuSeconds();
 
         std::vector<std::pair<double, std::string>> series, crackSeries, solidSeries;
-        RunSolid solid;  // built at the first snapshot
-        double solidVolume = 0.0;
+        RunSolid solid;                                     // built at the first snapshot
         std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
         bool cracksPossible = !noCracks;
         double crackSetup = 0.0, crackArea = 0.0, crackProjected = 0.0;
@@ -289,7 +288,7 @@ int main(int argc, char** argv) {
             if (solid.solid) {
                 const std::string vtm =
                     "solid_" + stem.substr(std::string("snapshot_").size()) + ".vtm";
-                solidVolume = gsph::post::writeSolid(out / vtm, *solid.solid, snap, solid.labels);
+                gsph::post::writeSolid(out / vtm, *solid.solid, snap, solid.labels);
                 solidSeries.emplace_back(snap.time, vtm);
             }
             if (cracksPossible) {
@@ -328,6 +327,7 @@ int main(int argc, char** argv) {
             gsph::post::writePvd(out / "solid.pvd", solidSeries);
             const gsph::post::HexSolid& s = *solid.solid;
             const double particleVolume = s.particleVolume(last);
+            const double solidVolume = s.currentVolume(last);
             std::printf(
                 "gsph-post: solid -> %s (open solid.pvd in ParaView): %zu spaces, %zu hexahedra, "
                 "nodes %s %s\n",

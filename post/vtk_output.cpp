@@ -352,26 +352,23 @@ std::string solidBlockName(const SolidPiece& piece, const RunLabels& labels) {
     return body + " space " + std::to_string(piece.space);
 }
 
-double writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snap,
-                  const RunLabels& labels) {
+void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snap,
+                const RunLabels& labels) {
     const std::string stem = vtm.stem().string();
     std::ostringstream out;
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
            "byte_order=\"LittleEndian\">\n  <vtkMultiBlockDataSet>\n";
-    double volume = 0.0;
     int index = 0;
     for (const SolidPiece& piece : solid.pieces()) {
         const std::string file = stem + "_s" + std::to_string(piece.space) + ".vtu";
         vtkSmartPointer<vtkUnstructuredGrid> grid = solidGrid(solid, piece, snap, labels);
         writeXml<vtkXMLUnstructuredGridWriter>(vtm.parent_path() / file, grid.GetPointer());
-        volume += hexahedraVolume(piece, solid.currentNodes(piece, snap));
         out << "    <DataSet index=\"" << index++ << "\" name=\""
             << xmlEscaped(solidBlockName(piece, labels)) << "\" file=\"" << xmlEscaped(file)
             << "\"/>\n";
     }
     out << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
     writeTextAtomically(vtm, out.str());
-    return volume;
 }
 
 void writeVtp(const std::filesystem::path& path, const CrackSurface& surface) {

@@ -54,10 +54,9 @@ vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const Soli
 std::string solidBlockName(const SolidPiece& piece, const RunLabels& labels);
 
 /// Writes the solid of a snapshot: each piece as STEM_sS.vtu (S its space) beside `vtm`, then
-/// the multiblock file `vtm` (STEM.vtm) naming them, one block per space. Returns the
-/// hexahedra's current volume Σ [m³].
-double writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snapshot,
-                  const RunLabels& labels);
+/// the multiblock file `vtm` (STEM.vtm) naming them, one block per space.
+void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snapshot,
+                const RunLabels& labels);
 
 /// A crack surface as VTK polygons (may be empty: no points, no polygons).
 void writeVtp(const std::filesystem::path& path, const CrackSurface& surface);
