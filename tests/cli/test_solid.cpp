@@ -3,7 +3,8 @@
 // hexahedra read back with VTK's readers; under an affine motion their volume is Σ V J to
 // round-off; the O-grid's periodic annulus closes (no free faces at its seam, no doubled
 // nodes); a --lattice layout's nodes are its box's corners; a file without /spaces/nodes (an
-// older gsph-preproc) still gives a closed solid from estimated nodes.
+// older gsph-preproc) still gives a closed solid from estimated nodes; overlapping spaces are
+// separate blocks without the cut cells.
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
@@ -301,6 +302,33 @@ TEST(HexSolid, FileWithoutNodesEstimatesThem) {
         volume += r.volume;
     }
     EXPECT_NEAR(volume, kF.determinant() * reference, 1e-12 * volume);
+}
+
+// Overlapping spaces (two blocks, the coarser cut where the finer covers it): each space its
+// own block, the cut cells left out, and Σ hexahedra = Σ V J still under an affine motion
+// (hole cutting removes whole cells: no volume counted twice here).
+TEST(HexSolid, OverlappingSpacesAreSeparateBlocksWithoutTheCutCells) {
+    TempDir dir;
+    const fs::path out = dir / "blocks.h5";
+    const auto r = runCommand(std::string(GSPH_PREPROC_EXE) + " " +
+                              (kSource / "geometries/two_blocks.geo").string() +
+                              " --set overlap=2 --set plane=1 -o " + out.string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const ParticleFile f = readParticleFile(out);
+    ASSERT_EQ(f.size(), 152);  // 160 hexahedra, 8 cut
+    const post::HexSolid solid(f, f.X, "blocks.h5");
+    ASSERT_EQ(solid.pieces().size(), 2u);
+    EXPECT_EQ(solid.hexahedra(), 152u);
+    const Snapshot snap = affineSnapshot(f, kF, kShift);
+    post::writeSolid(dir / "solid_000002.vtm", solid, snap, {});
+    double volume = 0.0;
+    for (const post::SolidPiece& piece : solid.pieces()) {
+        const ReadBack back =
+            readPiece(dir / ("solid_000002_s" + std::to_string(piece.space) + ".vtu"));
+        EXPECT_EQ(back.cells, static_cast<vtkIdType>(piece.hexes.size()));
+        volume += back.volume;
+    }
+    EXPECT_NEAR(volume, sumVJ(f, kF), 1e-12 * volume);
 }
 
 // A particle file of another run is refused with a line that says so.
