@@ -2,13 +2,19 @@
 // gsph-post: turns a run folder into ParaView files and pictures.
 //
 // Usage:   gsph-post RUNDIR [-o OUTDIR] [--field NAME] [--times T1,T2,...] [--size W,H]
-//                    [--no-pictures] [--no-cracks]
+//                    [--particles FILE] [--no-pictures] [--no-cracks] [--no-solid]
 // Sample:  gsph-post run/graded_bar
 //          gsph-post run/graded_bar --field plastic_strain --times 1e-5,3e-5
 // Description: writes OUTDIR (default RUNDIR/post) with
 //   run.pvd + snapshot_NNNNNN.vtu    particles with every field (open run.pvd in ParaView),
+//   solid.pvd + solid_NNNNNN.vtm     the solid: the hexahedral cells of every space (one
+//     + solid_NNNNNN_sS.vtu          .vtu per space S) with the fields as cell data (Slice,
+//                                    Clip, surface rendering); needs the run's particle file
+//                                    (--particles, else the one checkpoint.h5 names, else
+//                                    RUNDIR/particles.h5),
 //   cracks.pvd + crack_NNNNNN.vtp    crack surfaces (Voronoi facets of the broken bonds),
-//   FIELD_NNNNNN.png                 the deformed body coloured by FIELD at each of --times
+//   FIELD_NNNNNN.png                 the deformed solid (or particles without the particle
+//                                    file) coloured by FIELD at each of --times
 //                                    (the snapshot nearest to each time), or final_FIELD.png
 //                                    (the last snapshot) without --times,
 //   history.png, momentum.png        energies and momentum of history.csv.
@@ -34,7 +40,9 @@
 #include "core/error.hpp"
 #include "core/version.hpp"
 #include "crack_surface.hpp"
+#include "hex_solid.hpp"
 #include "io/atomic_file.hpp"
+#include "io/particle_file.hpp"
 #include "io/snapshot.hpp"
 #include "pictures.hpp"
 #include "vtk_output.hpp"
@@ -122,17 +130,55 @@ std::vector<std::size_t> nearestSnapshots(const std::vector<double>& times,
     return out;
 }
 
+// The run's solid (hex_solid.hpp) from its particle file, and the names for the field data.
+struct RunSolid {
+    std::unique_ptr<gsph::post::HexSolid> solid;
+    gsph::post::RunLabels labels;
+    fs::path path;       // the particle file
+    std::string source;  // and how it was found
+};
+
+// Builds the solid for the snapshots' reference positions X. `given`: --particles (a failure
+// to use it is an error); otherwise a particle file that is not found or does not fit leaves
+// the solid out, with one line that says why.
+RunSolid loadSolid(const fs::path& runDir, const fs::path& given,
+                   const std::vector<gsph::Vec3>& X) {
+    RunSolid run;
+    const gsph::post::ParticleFileLocation where = gsph::post::locateParticleFile(runDir, given);
+    if (!where.path) {
+        if (!given.empty()) throw gsph::InputError(where.why);
+        std::printf("gsph-post: no solid, only the particles: %s\n", where.why.c_str());
+        return run;
+    }
+    try {
+        const gsph::ParticleFile file = gsph::readParticleFileIsolated(*where.path);
+        run.solid = std::make_unique<gsph::post::HexSolid>(file, X, where.path->string());
+        for (const gsph::BodyInfo& b : file.bodies) run.labels.bodyNames.push_back(b.name);
+        for (const auto& [name, members] : file.sets) run.labels.setNames.push_back(name);
+        run.path = *where.path;
+        run.source = where.path->string() + " (" + where.why + ")";
+    } catch (const gsph::Error& e) {
+        if (!given.empty()) throw;
+        std::printf("gsph-post: no solid, only the particles: %s\n", e.what());
+    }
+    return run;
+}
+
 // The pictures (needs an X server): each snapshot of `pictured` coloured by `field`, named
-// final_FIELD.png if `final`, else FIELD_NNNNNN.png; then the plots of history.csv.
+// final_FIELD.png if `final`, else FIELD_NNNNNN.png; then the plots of history.csv. The body is
+// drawn as its solid when `particles` names the run's particle file, else as particles.
 void renderPictures(const std::vector<std::string>& pictured, bool final, const std::string& field,
-                    const fs::path& runDir, const fs::path& out, const std::vector<int>& size) {
+                    const fs::path& runDir, const fs::path& out, const std::vector<int>& size,
+                    const fs::path& particles) {
+    RunSolid run;
     for (const std::string& file : pictured) {
         const gsph::Snapshot snap = gsph::readSnapshotIsolated(file);
+        if (!particles.empty() && !run.solid) run = loadSolid(runDir, particles, snap.X);
         const std::string stem = fs::path(file).stem().string();
         const fs::path picture =
             out / (final ? "final_" + field + ".png"
                          : field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
-        gsph::post::renderSnapshot(snap, field, picture, size[0], size[1]);
+        gsph::post::renderSnapshot(snap, field, picture, size[0], size[1], run.solid.get());
         std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
     }
     const fs::path historyCsv = runDir / "history.csv";
@@ -169,9 +215,9 @@ int main(int argc, char** argv) {
     std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"gsph-post: ParaView files and pictures of a GSPH run"};
     app.set_version_flag("--version", gsph::kVersion);
-    std::string runDir, outDir, field = "von_mises";
+    std::string runDir, outDir, field = "von_mises", particlesOption;
     std::vector<double> times;
-    bool noPictures = false, noCracks = false;
+    bool noPictures = false, noCracks = false, noSolid = false;
     app.add_option("rundir", runDir, "run folder written by gsph-solve")->required();
     app.add_option("-o,--output", outDir, "output folder (default: RUNDIR/post)");
     app.add_option("--field", field, "field of the pictures")
@@ -188,6 +234,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(64, 8192));
     app.add_flag("--no-pictures", noPictures, "write only the ParaView files");
     app.add_flag("--no-cracks", noCracks, "write no crack surfaces");
+    app.add_option("--particles", particlesOption,
+                   "the run's particle file, for the solid (default: the one checkpoint.h5 "
+                   "names, else RUNDIR/particles.h5)");
+    app.add_flag("--no-solid", noSolid, "write no solid (hexahedra), only the particles");
     // Internal: the pictures' child process under xvfb-run (picturesUnderXvfb).
     std::vector<std::string> picturesOf;
     bool finalPicture = false;
@@ -201,7 +251,8 @@ int main(int argc, char** argv) {
     try {
         const fs::path out = outDir.empty() ? fs::path(runDir) / "post" : fs::path(outDir);
         if (!picturesOf.empty()) {
-            renderPictures(picturesOf, finalPicture, field, runDir, out, size);
+            renderPictures(picturesOf, finalPicture, field, runDir, out, size,
+                           noSolid ? fs::path() : fs::path(particlesOption));
             return 0;
         }
         const std::vector<fs::path> snapshots = snapshotFiles(runDir);
@@ -214,7 +265,8 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         const double cpuStart = cpuSeconds();
 
-        std::vector<std::pair<double, std::string>> series, crackSeries;
+        std::vector<std::pair<double, std::string>> series, crackSeries, solidSeries;
+        RunSolid solid;                                     // built at the first snapshot
         std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
         bool cracksPossible = !noCracks;
         double crackSetup = 0.0, crackArea = 0.0, crackProjected = 0.0;
@@ -230,8 +282,15 @@ int main(int argc, char** argv) {
                                        std::to_string(last.size()));
             const std::string stem = p.stem().string();
             const std::string vtu = stem + ".vtu";
-            gsph::post::writeVtu(out / vtu, snap);
+            if (k == 0 && !noSolid) solid = loadSolid(runDir, particlesOption, snap.X);
+            gsph::post::writeVtu(out / vtu, snap, solid.labels);
             series.emplace_back(snap.time, vtu);
+            if (solid.solid) {
+                const std::string vtm =
+                    "solid_" + stem.substr(std::string("snapshot_").size()) + ".vtm";
+                gsph::post::writeSolid(out / vtm, *solid.solid, snap, solid.labels);
+                solidSeries.emplace_back(snap.time, vtm);
+            }
             if (cracksPossible) {
                 gsph::post::CrackSurface surface;
                 if (!snap.brokenBonds.empty()) {
@@ -264,6 +323,23 @@ int main(int argc, char** argv) {
         gsph::post::writePvd(out / "run.pvd", series);
         std::printf("gsph-post: %zu snapshots of %d particles -> %s (open run.pvd in ParaView)\n",
                     snapshots.size(), static_cast<int>(last.size()), (out / "run.pvd").c_str());
+        if (solid.solid) {
+            gsph::post::writePvd(out / "solid.pvd", solidSeries);
+            const gsph::post::HexSolid& s = *solid.solid;
+            const double particleVolume = s.particleVolume(last);
+            const double solidVolume = s.currentVolume(last);
+            std::printf(
+                "gsph-post: solid -> %s (open solid.pvd in ParaView): %zu spaces, %zu hexahedra, "
+                "nodes %s %s\n",
+                (out / "solid.pvd").c_str(), s.pieces().size(), s.hexahedra(),
+                s.estimatedNodes() ? "estimated from the particles: no /spaces/nodes in" : "from",
+                solid.source.c_str());
+            std::printf(
+                "gsph-post: solid volume: reference %.9g m³ (Σ V %.9g m³), last snapshot %.9g m³ "
+                "(Σ V J %.9g m³, %+.3g %%)\n",
+                s.referenceVolume(), s.particleVolume(), solidVolume, particleVolume,
+                100.0 * (solidVolume - particleVolume) / particleVolume);
+        }
         if (cracksPossible) {
             gsph::post::writePvd(out / "cracks.pvd", crackSeries);
             std::printf(
@@ -283,7 +359,8 @@ int main(int argc, char** argv) {
             for (std::size_t k : nearestSnapshots(snapshotTimes, times))
                 pictured.push_back(snapshots[k].string());
             if (haveDisplay()) {
-                renderPictures(pictured, times.empty(), field, runDir, out, size);
+                renderPictures(pictured, times.empty(), field, runDir, out, size,
+                               solid.solid ? solid.path : fs::path());
             } else {
                 std::vector<std::string> child = {
                     runDir,
@@ -294,6 +371,12 @@ int main(int argc, char** argv) {
                     "--size",
                     std::to_string(size[0]) + "," + std::to_string(size[1])};
                 if (times.empty()) child.push_back("--final-picture");
+                if (solid.solid) {
+                    child.push_back("--particles");
+                    child.push_back(solid.path.string());
+                } else {
+                    child.push_back("--no-solid");
+                }
                 for (const std::string& p : pictured) {
                     child.push_back("--pictures-of");
                     child.push_back(p);

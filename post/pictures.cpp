@@ -6,28 +6,35 @@
 #include <vtkAxis.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkChartLegend.h>
 #include <vtkChartXY.h>
 #include <vtkContextActor.h>
 #include <vtkContextScene.h>
+#include <vtkDataSetSurfaceFilter.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPen.h>
+#include <vtkPlane.h>
 #include <vtkPlot.h>
 #include <vtkPointData.h>
 #include <vtkPointGaussianMapper.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkScalarBarActor.h>
 #include <vtkTable.h>
+#include <vtkTableBasedClipDataSet.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkWindowToImageFilter.h>
 #include <Eigen/LU>
 
@@ -85,8 +92,47 @@ void savePng(vtkRenderWindow* window, const std::filesystem::path& png) {
 
 }  // namespace
 
+namespace {
+
+// A piece of the solid at its current nodes, with `field` as its cells' scalars.
+vtkSmartPointer<vtkUnstructuredGrid> pieceWithField(const HexSolid& solid, const SolidPiece& piece,
+                                                    const Snapshot& s, const std::string& field,
+                                                    Vec3& lo, Vec3& hi) {
+    const std::vector<Vec3> x = solid.currentNodes(piece, s);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const Vec3& p : x) {
+        points->InsertNextPoint(p.data());
+        lo = lo.cwiseMin(p);
+        hi = hi.cwiseMax(p);
+    }
+    const auto nc = static_cast<vtkIdType>(piece.hexes.size());
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfTuples(nc + 1);
+    connectivity->SetNumberOfTuples(8 * nc);
+    vtkNew<vtkDoubleArray> values;
+    values->SetName(field.c_str());
+    values->SetNumberOfTuples(nc);
+    for (vtkIdType h = 0; h < nc; ++h) {
+        const auto k = static_cast<std::size_t>(h);
+        offsets->SetValue(h, 8 * h);
+        for (int c = 0; c < 8; ++c) connectivity->SetValue(8 * h + c, piece.hexes[k][c]);
+        values->SetValue(h, scalarField(s, static_cast<std::size_t>(piece.particle[k]), field));
+    }
+    offsets->SetValue(nc, 8 * nc);
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(offsets, connectivity);
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    grid->SetPoints(points);
+    grid->SetCells(VTK_HEXAHEDRON, cells);
+    grid->GetCellData()->SetScalars(values);
+    return grid;
+}
+
+}  // namespace
+
 void renderSnapshot(const Snapshot& s, const std::string& field, const std::filesystem::path& png,
-                    int width, int height) {
+                    int width, int height, const HexSolid* solid) {
     if (!isScalarField(field)) throw InputError("unknown picture field '" + field + "'");
     const vtkIdType n = s.size();
     vtkNew<vtkPoints> points;
@@ -141,6 +187,48 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
         "  ambientColor *= shade; diffuseColor *= shade; }\n");
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
+    // The solid instead of the particles: each space's hexahedra, surface rendered; a compact
+    // 3-D body (every extent at least a quarter of the largest) is cut through its middle
+    // (the half beyond the plane y = centre kept, the cut face towards the camera), so the
+    // picture shows the inside too.
+    std::vector<vtkSmartPointer<vtkActor>> solidActors;
+    bool cut = false;
+    if (solid != nullptr) {
+        std::vector<vtkSmartPointer<vtkUnstructuredGrid>> grids;
+        lo = Vec3::Constant(1e300);
+        hi = Vec3::Constant(-1e300);
+        for (const SolidPiece& piece : solid->pieces())
+            grids.push_back(pieceWithField(*solid, piece, s, field, lo, hi));
+        const Vec3 size = hi - lo;
+        cut = size.minCoeff() >= 0.25 * size.maxCoeff();
+        for (const auto& grid : grids) {
+            vtkNew<vtkDataSetSurfaceFilter> surface;
+            vtkNew<vtkPlane> plane;
+            vtkNew<vtkTableBasedClipDataSet> clip;
+            if (cut) {
+                const Vec3 middle = 0.5 * (lo + hi);
+                plane->SetOrigin(middle.data());
+                plane->SetNormal(0.0, 1.0, 0.0);
+                clip->SetInputData(grid);
+                clip->SetClipFunction(plane);
+                surface->SetInputConnection(clip->GetOutputPort());
+            } else {
+                surface->SetInputData(grid);
+            }
+            surface->Update();
+            vtkNew<vtkPolyDataMapper> hexMapper;
+            hexMapper->SetInputConnection(surface->GetOutputPort());
+            hexMapper->SetLookupTable(colours);
+            hexMapper->SetScalarModeToUseCellData();
+            hexMapper->SetScalarRange(range);
+            hexMapper->ScalarVisibilityOn();
+            auto hexActor = vtkSmartPointer<vtkActor>::New();
+            hexActor->SetMapper(hexMapper);
+            hexActor->GetProperty()->SetAmbient(0.25);
+            hexActor->GetProperty()->SetDiffuse(0.8);
+            solidActors.push_back(hexActor);
+        }
+    }
     const Vec3 extent = (hi - lo).cwiseMax(1e-12);
     const int dims = (extent.array() > 1e-9 * extent.maxCoeff()).count();
 
@@ -154,7 +242,8 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     bar->SetLabelFormat("%.3g");
     vtkNew<vtkTextActor> title;
     char text[128];
-    std::snprintf(text, sizeof text, "t = %.4g s   (%d particles)", s.time, static_cast<int>(n));
+    std::snprintf(text, sizeof text, "t = %.4g s   (%d particles%s)", s.time, static_cast<int>(n),
+                  solid == nullptr ? "" : (cut ? ", solid cut at mid-y" : ", solid"));
     title->SetInput(text);
     title->GetTextProperty()->SetFontSize(22);
     title->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
@@ -162,7 +251,8 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
 
     vtkNew<vtkRenderer> renderer;
     renderer->SetBackground(1.0, 1.0, 1.0);
-    renderer->AddActor(actor);
+    if (solid == nullptr) renderer->AddActor(actor);
+    for (const auto& a : solidActors) renderer->AddActor(a);
     renderer->AddActor2D(bar);
     renderer->AddActor2D(title);
     vtkCamera* camera = renderer->GetActiveCamera();
@@ -177,7 +267,7 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
         camera->SetViewUp(0, 1, 0);
     }
     renderer->ResetCamera();
-    camera->Zoom(1.2);
+    camera->Zoom(solid == nullptr ? 1.2 : 1.0);
     vtkNew<vtkRenderWindow> window;
     window->SetOffScreenRendering(1);
     window->SetSize(width, height);

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Pictures without a display (VTK offscreen rendering; Debian's VTK needs an X server, which
 // gsph-post provides through xvfb-run when DISPLAY is unset):
-//   * the deformed particles of a snapshot coloured by a field, with a colour bar and the time;
+//   * the deformed body of a snapshot (its solid, else its particles) coloured by a field, with a
+//     colour bar and the time;
 //   * plots of history.csv columns against time (energies, momentum), columns found by name.
 // PNGs are written under a temporary name and renamed.
 #pragma once
@@ -10,14 +11,17 @@
 #include <string>
 #include <vector>
 
+#include "hex_solid.hpp"
 #include "io/snapshot.hpp"
 
 namespace gsph::post {
 
-/// The deformed particles of a snapshot coloured by a scalar field (vtk_output.hpp,
-/// scalarFieldNames()), with a colour bar and the time.
+/// The deformed body of a snapshot coloured by a scalar field (vtk_output.hpp,
+/// scalarFieldNames()), with a colour bar and the time: the solid's hexahedra when `solid` is
+/// given (a compact 3-D body cut through its middle to show the inside), else the particles.
 void renderSnapshot(const Snapshot& snapshot, const std::string& field,
-                    const std::filesystem::path& png, int width = 1200, int height = 800);
+                    const std::filesystem::path& png, int width = 1200, int height = 800,
+                    const HexSolid* solid = nullptr);
 
 /// history.csv as columns by name (the solver adds columns: never rely on their order).
 struct HistoryTable {

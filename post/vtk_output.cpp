@@ -4,12 +4,14 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -119,67 +121,80 @@ double scalarField(const Snapshot& s, std::size_t a, const std::string& name) {
 
 namespace {
 
-// The .vtu point-data array of a snapshot field (Snapshot::forEachField), filled in parallel
-// through raw pointers (VTK's setters are not safe to call from several threads).
-vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Vec3>& a) {
+// Rows of a per-particle array to write: every particle (pick == nullptr), or those of `pick`.
+struct Rows {
+    const std::vector<Index>* pick = nullptr;
+    std::size_t all = 0;
+    vtkIdType size() const { return static_cast<vtkIdType>(pick ? pick->size() : all); }
+    std::size_t operator()(std::ptrdiff_t i) const {
+        return pick ? static_cast<std::size_t>((*pick)[static_cast<std::size_t>(i)])
+                    : static_cast<std::size_t>(i);
+    }
+};
+
+// The array of a snapshot field (Snapshot::forEachField), filled in parallel through raw
+// pointers (VTK's setters are not safe to call from several threads).
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Vec3>& a,
+                                         const Rows& rows) {
     auto out = vtkSmartPointer<vtkDoubleArray>::New();
     out->SetName(name);
     out->SetNumberOfComponents(3);
-    out->SetNumberOfTuples(static_cast<vtkIdType>(a.size()));
+    out->SetNumberOfTuples(rows.size());
     double* p = out->GetPointer(0);
-    parallelFor(static_cast<std::ptrdiff_t>(a.size()), [&](std::ptrdiff_t i) {
-        for (int d = 0; d < 3; ++d) p[3 * i + d] = a[static_cast<std::size_t>(i)][d];
+    parallelFor(rows.size(), [&](std::ptrdiff_t i) {
+        for (int d = 0; d < 3; ++d) p[3 * i + d] = a[rows(i)][d];
     });
     return out;
 }
 // Tensors: nine components named XX, XY, … ZZ (row-major), as ParaView lists them.
-vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Mat3>& a) {
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Mat3>& a,
+                                         const Rows& rows) {
     auto out = vtkSmartPointer<vtkDoubleArray>::New();
     out->SetName(name);
     out->SetNumberOfComponents(9);
-    out->SetNumberOfTuples(static_cast<vtkIdType>(a.size()));
+    out->SetNumberOfTuples(rows.size());
     static const char* const kComponents[] = {"XX", "XY", "XZ", "YX", "YY", "YZ", "ZX", "ZY", "ZZ"};
     for (int c = 0; c < 9; ++c) out->SetComponentName(c, kComponents[c]);
     double* p = out->GetPointer(0);
-    parallelFor(static_cast<std::ptrdiff_t>(a.size()), [&](std::ptrdiff_t i) {
+    parallelFor(rows.size(), [&](std::ptrdiff_t i) {
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) p[9 * i + 3 * r + c] = a[static_cast<std::size_t>(i)](r, c);
+            for (int c = 0; c < 3; ++c) p[9 * i + 3 * r + c] = a[rows(i)](r, c);
     });
     return out;
 }
 template <class VtkArray, class T>
-vtkSmartPointer<vtkDataArray> scalarArray(const char* name, const std::vector<T>& a) {
+vtkSmartPointer<vtkDataArray> scalarArray(const char* name, const std::vector<T>& a,
+                                          const Rows& rows) {
     auto out = vtkSmartPointer<VtkArray>::New();
     out->SetName(name);
     out->SetNumberOfComponents(1);
-    out->SetNumberOfTuples(static_cast<vtkIdType>(a.size()));
+    out->SetNumberOfTuples(rows.size());
     auto* p = out->GetPointer(0);
-    parallelFor(static_cast<std::ptrdiff_t>(a.size()),
-                [&](std::ptrdiff_t i) { p[i] = a[static_cast<std::size_t>(i)]; });
+    parallelFor(rows.size(), [&](std::ptrdiff_t i) { p[i] = a[rows(i)]; });
     return out;
 }
-vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<double>& a) {
-    return scalarArray<vtkDoubleArray>(name, a);
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<double>& a,
+                                         const Rows& rows) {
+    return scalarArray<vtkDoubleArray>(name, a, rows);
 }
-vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Index>& a) {
-    return scalarArray<vtkIntArray>(name, a);
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<Index>& a,
+                                         const Rows& rows) {
+    return scalarArray<vtkIntArray>(name, a, rows);
 }
-vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<std::uint8_t>& a) {
-    return scalarArray<vtkUnsignedCharArray>(name, a);
+vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<std::uint8_t>& a,
+                                         const Rows& rows) {
+    return scalarArray<vtkUnsignedCharArray>(name, a, rows);
 }
 
-}  // namespace
+// Units of the arrays gsph-post derives (the snapshot's own carry theirs: SnapshotField::unit).
+constexpr std::pair<const char*, const char*> kDerivedUnits[] = {
+    {"displacement", "m"}, {"von_mises", "Pa"}, {"pressure", "Pa"},        {"J", "1"},
+    {"id", "1"},           {"radius", "m"},     {"node_displacement", "m"}};
 
-void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
-    const vtkIdType n = snap.size();
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(n);
-    // One VTK_VERTEX per particle, built as flat offsets + connectivity (no per-cell insert).
-    vtkNew<vtkIdTypeArray> offsets, connectivity;
-    offsets->SetNumberOfTuples(n + 1);
-    connectivity->SetNumberOfTuples(n);
-    // Derived from the snapshot's fields; the fields themselves follow (Snapshot::forEachField).
+// The per-particle arrays (point data of the cloud, cell data of the solid): displacement,
+// von_mises, pressure, J, id, radius, then every snapshot field with a vtuName.
+void addParticleArrays(vtkDataSetAttributes* out, const Snapshot& snap, const Rows& rows) {
+    const vtkIdType n = rows.size();
     auto displacement = namedArray<vtkDoubleArray>("displacement", 3, n);
     auto mises = namedArray<vtkDoubleArray>("von_mises", 1, n);
     auto pressure = namedArray<vtkDoubleArray>("pressure", 1, n);
@@ -189,40 +204,171 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap) {
     auto id = namedArray<vtkIntArray>("id", 1, n);
     auto radius = namedArray<vtkDoubleArray>("radius", 1, n);
     // Filled through raw pointers: VTK's setters are not safe to call from several threads.
-    double* X = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
-    vtkIdType* off = offsets->GetPointer(0);
-    vtkIdType* con = connectivity->GetPointer(0);
     double *u = displacement->GetPointer(0), *vm = mises->GetPointer(0),
            *p = pressure->GetPointer(0), *detF = J->GetPointer(0), *r = radius->GetPointer(0);
     int* ids = id->GetPointer(0);
+    parallelFor(n, [&](std::ptrdiff_t k) {
+        const std::size_t i = rows(k);
+        for (int d = 0; d < 3; ++d) u[3 * k + d] = snap.x[i][d] - snap.X[i][d];
+        vm[k] = vonMises(snap.stress[i]);
+        p[k] = -snap.stress[i].trace() / 3.0;
+        detF[k] = snap.F[i].determinant();
+        ids[k] = static_cast<int>(i);
+        r[k] = 0.5 * std::cbrt(snap.volume[i] * detF[k]);
+    });
+    for (vtkDataArray* arr :
+         std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J, id, radius})
+        out->AddArray(arr);
+    snap.forEachField([&](const SnapshotField& field, const auto& array) {
+        if (field.vtuName != nullptr) out->AddArray(fieldArray(field.vtuName, array, rows));
+    });
+}
+
+vtkSmartPointer<vtkStringArray> stringArray(const char* name,
+                                            const std::vector<std::string>& values) {
+    auto out = vtkSmartPointer<vtkStringArray>::New();
+    out->SetName(name);
+    out->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+    for (std::size_t k = 0; k < values.size(); ++k)
+        out->SetValue(static_cast<vtkIdType>(k), values[k]);
+    return out;
+}
+
+// Field data of every .vtu: the time (TimeValue, as ParaView names it), the body and set names,
+// and the unit of every array ("NAME=UNIT").
+void addFieldData(vtkDataObject* data, const Snapshot& snap, const RunLabels& labels) {
+    vtkFieldData* fd = data->GetFieldData();
+    auto time = namedArray<vtkDoubleArray>("TimeValue", 1, 1);
+    time->SetValue(0, snap.time);
+    fd->AddArray(time);
+    std::vector<std::string> units;
+    for (const auto& [name, unit] : kDerivedUnits) units.push_back(std::string(name) + "=" + unit);
+    snap.forEachField([&](const SnapshotField& field, const auto&) {
+        if (field.vtuName != nullptr)
+            units.push_back(std::string(field.vtuName) + "=" + field.unit);
+    });
+    units.push_back("TimeValue=s");
+    units.push_back("Points=m");
+    fd->AddArray(stringArray("units", units));
+    if (!labels.bodyNames.empty()) fd->AddArray(stringArray("body_names", labels.bodyNames));
+    if (!labels.setNames.empty()) fd->AddArray(stringArray("set_names", labels.setNames));
+}
+
+std::string xmlEscaped(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+void writeVtu(const std::filesystem::path& path, const Snapshot& snap, const RunLabels& labels) {
+    const vtkIdType n = snap.size();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(n);
+    // One VTK_VERTEX per particle, built as flat offsets + connectivity (no per-cell insert).
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfTuples(n + 1);
+    connectivity->SetNumberOfTuples(n);
+    double* x = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+    vtkIdType* off = offsets->GetPointer(0);
+    vtkIdType* con = connectivity->GetPointer(0);
     off[n] = n;
     parallelFor(n, [&](std::ptrdiff_t a) {
-        const auto i = static_cast<std::size_t>(a);
         off[a] = a;
         con[a] = a;
-        for (int d = 0; d < 3; ++d) {
-            X[3 * a + d] = snap.x[i][d];
-            u[3 * a + d] = snap.x[i][d] - snap.X[i][d];
-        }
-        vm[a] = vonMises(snap.stress[i]);
-        p[a] = -snap.stress[i].trace() / 3.0;
-        detF[a] = snap.F[i].determinant();
-        ids[a] = static_cast<int>(a);
-        r[a] = 0.5 * std::cbrt(snap.volume[i] * detF[a]);
+        for (int d = 0; d < 3; ++d) x[3 * a + d] = snap.x[static_cast<std::size_t>(a)][d];
     });
     vtkNew<vtkCellArray> cells;
     cells->SetData(offsets, connectivity);
     vtkNew<vtkUnstructuredGrid> grid;
     grid->SetPoints(points);
     grid->SetCells(VTK_VERTEX, cells);
-    vtkPointData* pd = grid->GetPointData();
-    for (vtkDataArray* arr :
-         std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J, id, radius})
-        pd->AddArray(arr);
-    snap.forEachField([&](const SnapshotField& field, const auto& array) {
-        if (field.vtuName != nullptr) pd->AddArray(fieldArray(field.vtuName, array));
-    });
+    addParticleArrays(grid->GetPointData(), snap, Rows{nullptr, static_cast<std::size_t>(n)});
+    addFieldData(grid, snap, labels);
     writeXml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const SolidPiece& piece,
+                                               const Snapshot& snap, const RunLabels& labels) {
+    const std::vector<Vec3> x = solid.currentNodes(piece, snap);
+    const auto np = static_cast<vtkIdType>(x.size());
+    const auto nc = static_cast<vtkIdType>(piece.hexes.size());
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(np);
+    auto nodeDisplacement = namedArray<vtkDoubleArray>("node_displacement", 3, np);
+    double* xp = vtkDoubleArray::SafeDownCast(points->GetData())->GetPointer(0);
+    double* up = nodeDisplacement->GetPointer(0);
+    for (vtkIdType i = 0; i < np; ++i) {
+        const auto k = static_cast<std::size_t>(i);
+        for (int d = 0; d < 3; ++d) {
+            xp[3 * i + d] = x[k][d];
+            up[3 * i + d] = x[k][d] - piece.nodeX[k][d];
+        }
+    }
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfTuples(nc + 1);
+    connectivity->SetNumberOfTuples(8 * nc);
+    vtkIdType* off = offsets->GetPointer(0);
+    vtkIdType* con = connectivity->GetPointer(0);
+    for (vtkIdType h = 0; h <= nc; ++h) off[h] = 8 * h;
+    for (vtkIdType h = 0; h < nc; ++h)
+        for (int c = 0; c < 8; ++c) con[8 * h + c] = piece.hexes[static_cast<std::size_t>(h)][c];
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(offsets, connectivity);
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    grid->SetPoints(points);
+    grid->SetCells(VTK_HEXAHEDRON, cells);
+    grid->GetPointData()->AddArray(nodeDisplacement);
+    addParticleArrays(grid->GetCellData(), snap, Rows{&piece.particle, 0});
+    addFieldData(grid, snap, labels);
+    return grid;
+}
+
+std::string solidBlockName(const SolidPiece& piece, const RunLabels& labels) {
+    const auto b = static_cast<std::size_t>(piece.body);
+    const std::string body = b < labels.bodyNames.size() && !labels.bodyNames[b].empty()
+                                 ? labels.bodyNames[b]
+                                 : "body " + std::to_string(piece.body);
+    return body + " space " + std::to_string(piece.space);
+}
+
+void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snap,
+                const RunLabels& labels) {
+    const std::string stem = vtm.stem().string();
+    std::ostringstream out;
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
+           "byte_order=\"LittleEndian\">\n  <vtkMultiBlockDataSet>\n";
+    int index = 0;
+    for (const SolidPiece& piece : solid.pieces()) {
+        const std::string file = stem + "_s" + std::to_string(piece.space) + ".vtu";
+        vtkSmartPointer<vtkUnstructuredGrid> grid = solidGrid(solid, piece, snap, labels);
+        writeXml<vtkXMLUnstructuredGridWriter>(vtm.parent_path() / file, grid.GetPointer());
+        out << "    <DataSet index=\"" << index++ << "\" name=\""
+            << xmlEscaped(solidBlockName(piece, labels)) << "\" file=\"" << xmlEscaped(file)
+            << "\"/>\n";
+    }
+    out << "  </vtkMultiBlockDataSet>\n</VTKFile>\n";
+    writeTextAtomically(vtm, out.str());
 }
 
 void writeVtp(const std::filesystem::path& path, const CrackSurface& surface) {

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: MIT
-// ParaView output of gsph-post (docs/formats.md, "gsph-post output"): one .vtu point cloud per
-// snapshot, one .vtp crack surface per snapshot, and .pvd time series of either.
-// Point fields of the .vtu: displacement, velocity (3 components), stress (Cauchy, 9
-// components, row-major), von_mises, pressure, plastic_strain, temperature, damage, J,
-// reference_volume (float64), body, space (int32), transient (uint8). Cell fields of the .vtp:
-// reference_area (float64), bond (int32, 2 components). Files are written under a temporary
-// name and renamed.
+// ParaView output of gsph-post (docs/formats.md, "gsph-post output"): per snapshot one .vtu
+// point cloud, the solid (a .vtm of one .vtu of hexahedra per space, hex_solid.hpp) and one
+// .vtp crack surface, and .pvd time series of each.
+// Per-particle arrays (point data of the cloud, cell data of the solid): displacement, velocity
+// (3 components), stress (Cauchy, 9 components XX … ZZ, row-major), von_mises, pressure,
+// plastic_strain, temperature, damage, bond_damage, J, radius, reference_volume (float64), id,
+// body, space (int32), transient (uint8). Field data of every .vtu: TimeValue, units
+// ("NAME=UNIT"), body_names and set_names (when the particle file is at hand). Cell fields of
+// the .vtp: reference_area (float64), bond (int32, 2 components). Files are written under a
+// temporary name and renamed.
 #pragma once
 
 #include <filesystem>
@@ -13,8 +16,13 @@
 #include <utility>
 #include <vector>
 
+#include <vtkSmartPointer.h>
+
 #include "crack_surface.hpp"
+#include "hex_solid.hpp"
 #include "io/snapshot.hpp"
+
+class vtkUnstructuredGrid;
 
 namespace gsph::post {
 
@@ -28,7 +36,27 @@ bool isScalarField(const std::string& name);
 /// Throws InputError for a name not in scalarFieldNames().
 double scalarField(const Snapshot& snapshot, std::size_t particle, const std::string& name);
 
-void writeVtu(const std::filesystem::path& path, const Snapshot& snapshot);
+/// Names for the field data: the particle file's bodies (by body id) and sets (empty: not known).
+struct RunLabels {
+    std::vector<std::string> bodyNames, setNames;
+};
+
+/// The particles as a point cloud (a VTK_VERTEX per particle).
+void writeVtu(const std::filesystem::path& path, const Snapshot& snapshot,
+              const RunLabels& labels = {});
+
+/// One piece of the solid in a snapshot: its hexahedra at the current node positions, the
+/// particle arrays as cell data, node_displacement (x_n − X_n) as point data.
+vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const SolidPiece& piece,
+                                               const Snapshot& snapshot, const RunLabels& labels);
+
+/// The block name of a piece: "BODY space S" (BODY = the body's name, or "body B").
+std::string solidBlockName(const SolidPiece& piece, const RunLabels& labels);
+
+/// Writes the solid of a snapshot: each piece as STEM_sS.vtu (S its space) beside `vtm`, then
+/// the multiblock file `vtm` (STEM.vtm) naming them, one block per space.
+void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snapshot,
+                const RunLabels& labels);
 
 /// A crack surface as VTK polygons (may be empty: no points, no polygons).
 void writeVtp(const std::filesystem::path& path, const CrackSurface& surface);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <limits>
 #include <map>
 
 #include "block_indexing.hpp"
@@ -209,6 +210,35 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
     }
 }
 
+/// Appends the reference positions of a space's lattice nodes (ParticleFile::nodes, lattice
+/// order) from its blocks' mesh nodes; a node on a periodic seam is stored once.
+void appendSpaceNodes(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
+                      const GluedSpace& space, const LatticeSpace& lattice,
+                      std::vector<Vec3>& nodes) {
+    const std::size_t first = nodes.size();
+    const auto m = nodeExtent(lattice);
+    nodes.resize(first + m[0] * m[1] * m[2],
+                 Vec3::Constant(std::numeric_limits<double>::quiet_NaN()));
+    for (std::size_t e = 0; e < space.blocks.size(); ++e) {
+        const BlockLattice& block = blocks[static_cast<std::size_t>(space.blocks[e])];
+        for (int k = 0; k <= block.cells[2]; ++k)
+            for (int j = 0; j <= block.cells[1]; ++j)
+                for (int i = 0; i <= block.cells[0]; ++i) {
+                    const Int3 x = space.toSpace[e].node({i, j, k});
+                    for (int d = 0; d < 3; ++d)
+                        if (!space.periodic[d] && (x[d] < 0 || x[d] > space.cells[d]))
+                            throw MeshError(mesh.source +
+                                            ": internal error: a block node lies outside its "
+                                            "space's lattice");
+                    nodes[first + nodeRow(lattice, x[0], x[1], x[2])] =
+                        mesh.nodes[static_cast<std::size_t>(block.node(i, j, k))];
+                }
+    }
+    for (std::size_t r = first; r < nodes.size(); ++r)
+        if (!nodes[r].allFinite())
+            throw MeshError(mesh.source + ": internal error: a space's node lattice has a hole");
+}
+
 /// Drops the particles with keep = 0 from every per-particle array; renumbers particleOfHex
 /// (−1 for a cut hex).
 void compact(const std::vector<char>& keep, Assembly& as) {
@@ -390,6 +420,7 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
     for (std::size_t s = 0; s < glued.spaces.size(); ++s) {
         const GluedSpace& space = glued.spaces[s];
         pf.spaces.push_back(LatticeSpace{kDtheta, space.cells, space.periodic});
+        appendSpaceNodes(mesh, blocks, space, pf.spaces.back(), pf.nodes);
         out.stats.spaceVolumes.emplace_back();
         for (std::size_t e = 0; e < space.blocks.size(); ++e) {
             const BlockLattice& block = blocks[space.blocks[e]];

@@ -195,6 +195,11 @@ void fillUniformLattice(const HexMesh& mesh, const std::vector<BlockLattice>& bl
         }
         const auto spaceId = static_cast<Index>(b);
         pf.spaces.push_back(LatticeSpace{1.0, lat.cells, {false, false, false}});
+        // The box lattice's corners (ParticleFile::nodes), lattice order.
+        for (int k = 0; k <= lat.cells[2]; ++k)
+            for (int j = 0; j <= lat.cells[1]; ++j)
+                for (int i = 0; i <= lat.cells[0]; ++i)
+                    pf.nodes.push_back(lat.origin + Vec3(i, j, k).cwiseProduct(lat.h));
         const double volume = lat.h[0] * lat.h[1] * lat.h[2];
         std::size_t kept = 0;
         for (std::size_t n = 0; n < keep.size(); ++n) {

@@ -154,6 +154,33 @@ void validateOverset(const ParticleFile& f, const std::vector<Index>& bodyOfSpac
 
 }  // namespace
 
+std::array<std::size_t, 3> nodeExtent(const LatticeSpace& space) {
+    std::array<std::size_t, 3> m{};
+    for (std::size_t d = 0; d < 3; ++d)
+        m[d] = static_cast<std::size_t>(space.cells[d]) + (space.periodic[d] ? 0 : 1);
+    return m;
+}
+
+std::size_t nodeCount(const std::vector<LatticeSpace>& spaces) {
+    std::size_t total = 0;
+    for (const LatticeSpace& s : spaces) {
+        const auto m = nodeExtent(s);
+        total += m[0] * m[1] * m[2];
+    }
+    return total;
+}
+
+std::size_t nodeRow(const LatticeSpace& space, int i, int j, int k) {
+    const auto m = nodeExtent(space);
+    const int ijk[3] = {i, j, k};
+    std::size_t u[3];
+    for (std::size_t d = 0; d < 3; ++d) {
+        const auto md = static_cast<long>(m[d]);
+        u[d] = static_cast<std::size_t>(((ijk[d] % md) + md) % md);
+    }
+    return u[0] + m[0] * (u[1] + m[1] * u[2]);
+}
+
 void validateParticleFile(const ParticleFile& f) {
     const auto n = static_cast<std::size_t>(f.size());
     if (f.theta.size() != n || f.volume.size() != n || f.space.size() != n || f.body.size() != n) {
@@ -176,6 +203,14 @@ void validateParticleFile(const ParticleFile& f) {
                 invalid("set '" + name + "' is not sorted and unique");
             }
         }
+    }
+    if (!f.nodes.empty()) {
+        if (f.nodes.size() != nodeCount(f.spaces))
+            invalid("/spaces/nodes has " + std::to_string(f.nodes.size()) +
+                    " rows, the spaces' lattices have " + std::to_string(nodeCount(f.spaces)) +
+                    " nodes");
+        for (const Vec3& X : f.nodes)
+            if (!X.allFinite()) invalid("a node position in /spaces/nodes is not finite");
     }
     for (const auto& [name, areas] : f.setAreas) {
         const auto set = f.sets.find(name);
@@ -242,6 +277,10 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f)
         h5.write("/spaces/cells", cells.data(), {spaces, 3});
         h5.write("/spaces/periodic", periodic.data(), {spaces, 3});
         h5.write("/spaces/dtheta", dtheta.data(), {spaces});
+        if (!f.nodes.empty()) {
+            h5.write("/spaces/nodes", f.nodes.front().data(), {f.nodes.size(), 3});
+            h5.setAttribute("/spaces/nodes", "units", std::string("m"));
+        }
 
         std::vector<std::string> names;
         std::vector<std::int32_t> tags;
@@ -383,6 +422,20 @@ ParticleFile readParticleFile(const std::filesystem::path& path) {
         }
     }
 
+    if (h5.exists("/spaces/nodes")) {  // since 1.3
+        // Checked against the spaces before anything is allocated from its length.
+        std::vector<std::size_t> nodeDims;
+        const std::vector<double> flat = h5.read<double>("/spaces/nodes", nodeDims);
+        const std::size_t expected = nodeCount(f.spaces);
+        if (expectShape(h5, "/spaces/nodes", nodeDims, 3) != expected)
+            throw IoError(h5.name() + ": /spaces/nodes has " + std::to_string(nodeDims[0]) +
+                          " rows, the spaces' lattices have " + std::to_string(expected) +
+                          " nodes");
+        f.nodes.resize(expected);
+        for (std::size_t r = 0; r < expected; ++r)
+            f.nodes[r] = Vec3(flat[3 * r], flat[3 * r + 1], flat[3 * r + 2]);
+    }
+
     const std::vector<std::string> names = h5.readStrings("/bodies/name");
     const std::vector<std::int32_t> tags =
         readColumn<std::int32_t>(h5, "/bodies/source_tag", names.size());
@@ -435,6 +488,7 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
             w.array(f.overset.omega);
             w.value(f.overset.kappa);
             w.array(f.spaces);
+            w.array(f.nodes);
             w.value<std::uint64_t>(f.bodies.size());
             for (const BodyInfo& b : f.bodies) {
                 w.text(b.name);
@@ -472,6 +526,7 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
     f.overset.omega = r.array<double>();
     f.overset.kappa = r.value<double>();
     f.spaces = r.array<LatticeSpace>();
+    f.nodes = r.array<Vec3>();
     f.bodies.resize(r.value<std::uint64_t>());
     for (BodyInfo& b : f.bodies) {
         b.name = r.text();

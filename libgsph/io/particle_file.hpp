@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The particle file (DESIGN §1, §2): what gsph-preproc writes and gsph-solve reads. HDF5,
-// format "gsph-particles" 1.1, layout in docs/formats.md (1.1 added /overset and
-// /particles/transient; 1.0 files still read, without transient particles).
+// format "gsph-particles" 1.3, layout in docs/formats.md (1.1 added /overset and
+// /particles/transient, 1.2 /set_areas, 1.3 /spaces/nodes; older files still read, without
+// what they lack).
 //
 // Invariants (checked by validateParticleFile, on write and on read):
 //   * every per-particle array has N entries (latticeIndex: N or none);
@@ -12,7 +13,9 @@
 //   * overset entries (DESIGN §6) are sorted by (space, particle), unique, name an existing
 //     particle and another space of its body, carry finite θ within 2·kappa·Δθ of that space's
 //     lattice and a positive finite ω; `transient` (N entries, or none when there are no
-//     entries) is 1 exactly for the particles that have an entry.
+//     entries) is 1 exactly for the particles that have an entry;
+//   * nodes (the lattice corners' reference positions, optional) hold nodeCount(spaces) finite
+//     rows: space after space, each in lattice order (i fastest), nodeExtent nodes per index.
 // Ownership: plain values; writeParticleFile writes atomically (io/atomic_file.hpp).
 #pragma once
 
@@ -30,13 +33,22 @@ namespace gsph {
 
 inline constexpr const char* kParticleFormat = "gsph-particles";
 inline constexpr int kParticleFormatMajor = 1;  ///< readers reject another major version
-inline constexpr int kParticleFormatMinor = 2;  ///< additions that old readers may ignore
+inline constexpr int kParticleFormatMinor = 3;  ///< additions that old readers may ignore
 
 /// One body: a gmsh physical volume group (or the whole mesh when there is none).
 struct BodyInfo {
     std::string name;      ///< the group's name; empty if it has none
     Index sourceTag = -1;  ///< the group's tag in the source mesh; -1 if none
 };
+
+/// Lattice nodes of a space along each index: n + 1, or n along a periodic index (node n is
+/// node 0 there, so a seam's nodes are shared).
+std::array<std::size_t, 3> nodeExtent(const LatticeSpace& space);
+/// Σ over the spaces of their nodes (the rows of /spaces/nodes).
+std::size_t nodeCount(const std::vector<LatticeSpace>& spaces);
+/// Row of lattice node (i, j, k) of a space within that space's nodes (indices wrapped along
+/// periodic axes).
+std::size_t nodeRow(const LatticeSpace& space, int i, int j, int k);
 
 struct ParticleFile {
     // Per particle (N entries), sorted by body then space; lattice order within a space.
@@ -58,6 +70,10 @@ struct ParticleFile {
     /// set's surface in the reference configuration, in the order of the set's indices [m²]
     /// (what a pressure on the set acts on, boundary/pressure.hpp).
     std::map<std::string, std::vector<Vec3>> setAreas;
+    /// Reference positions of the lattice nodes (the corners of the particles' cells: a mesh's
+    /// hex nodes, or a --lattice box's corners) [m]; optional (since 1.3): empty or
+    /// nodeCount(spaces) rows, space after space, each in lattice order (i fastest).
+    std::vector<Vec3> nodes;
     Provenance provenance;
 
     Index size() const { return static_cast<Index>(X.size()); }

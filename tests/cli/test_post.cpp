@@ -3,12 +3,17 @@
 // snapshot's, the .pvd lists every snapshot, and the pictures are real (expected size, not
 // blank), also at chosen times and for the momentum. Bad input gets a one-line error.
 #include <gtest/gtest.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
+#include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPointData.h>
+#include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkXMLMultiBlockDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <Eigen/LU>
@@ -41,14 +46,28 @@ class PostRun : public ::testing::Test {
         ASSERT_EQ(r.status, 0) << r.err;
         r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string());
         ASSERT_EQ(r.status, 0) << r.err;
+        solidLine_ = r.out;
         r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string() + " -o " +
                        (*dir_ / "pictures").string() + " --field displacement --times 1e-5,1");
         ASSERT_EQ(r.status, 0) << r.err;
+        // The same particle file as an older gsph-preproc wrote it (no /spaces/nodes, 1.2).
+        fs::copy_file(*dir_ / "particles.h5", *dir_ / "old.h5");
+        r = runCommand("/usr/bin/python3 -c \"import h5py; f = h5py.File('" +
+                       (*dir_ / "old.h5").string() +
+                       "', 'r+'); del f['spaces/nodes']; f.attrs['format_version'] = '1.2'\"");
+        ASSERT_EQ(r.status, 0) << r.err;
+        r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string() + " -o " +
+                       (*dir_ / "post_old").string() + " --no-pictures --particles " +
+                       (*dir_ / "old.h5").string());
+        ASSERT_EQ(r.status, 0) << r.err;
+        oldFileOutput_ = r.out;
     }
     static void TearDownTestSuite() { delete dir_; }
     static TempDir* dir_;
+    static std::string solidLine_, oldFileOutput_;
 };
 TempDir* PostRun::dir_ = nullptr;
+std::string PostRun::solidLine_, PostRun::oldFileOutput_;
 
 // Every field of the snapshot, read back with VTK's reader: float64 arrays round-trip exactly.
 TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
@@ -109,6 +128,88 @@ TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
         EXPECT_EQ(scalar("transient", a), snap.transient[i]);
     }
     EXPECT_EQ(worst, 0.0);  // written as float64: exact round trip
+}
+
+// The solid: solid.pvd of one .vtm per snapshot, each with one block (the bar is one space) of
+// VTK_HEXAHEDRON cells, one per particle, whose cell arrays are the particles'; field data
+// TimeValue, body and set names, units; the point cloud carries the same field data.
+TEST_F(PostRun, SolidReadsBackWithVtk) {
+    const Snapshot snap = readSnapshot(*dir_ / "run/snapshot_000007.h5");
+    EXPECT_TRUE(fs::exists(*dir_ / "run/post/solid.pvd"));
+    vtkNew<vtkXMLMultiBlockDataReader> blocks;
+    blocks->SetFileName((*dir_ / "run/post/solid_000007.vtm").c_str());
+    blocks->Update();
+    auto* mb = vtkMultiBlockDataSet::SafeDownCast(blocks->GetOutput());
+    ASSERT_NE(mb, nullptr);
+    ASSERT_EQ(mb->GetNumberOfBlocks(), 1u);
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((*dir_ / "run/post/solid_000007_s0.vtu").c_str());
+    reader->Update();
+    vtkUnstructuredGrid* grid = reader->GetOutput();
+    ASSERT_EQ(grid->GetNumberOfCells(), snap.size());
+    EXPECT_EQ(grid->GetNumberOfPoints(), 21 * 5 * 5);  // the 20×4×4 cells' corners
+    vtkCellData* cd = grid->GetCellData();
+    for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+        EXPECT_EQ(grid->GetCellType(c), VTK_HEXAHEDRON);
+        const auto a = static_cast<std::size_t>(cd->GetArray("id")->GetTuple1(c));
+        ASSERT_LT(a, static_cast<std::size_t>(snap.size()));
+        EXPECT_EQ(cd->GetArray("von_mises")->GetTuple1(c), post::vonMises(snap.stress[a]));
+        for (int k = 0; k < 9; ++k)
+            EXPECT_EQ(cd->GetArray("stress")->GetComponent(c, k), snap.stress[a](k / 3, k % 3));
+        EXPECT_EQ(cd->GetArray("radius")->GetTuple1(c),
+                  0.5 * std::cbrt(snap.volume[a] * snap.F[a].determinant()));
+        EXPECT_EQ(cd->GetArray("temperature")->GetTuple1(c), snap.temperature[a]);
+    }
+    EXPECT_STREQ(cd->GetArray("stress")->GetComponentName(8), "ZZ");
+    for (const fs::path& vtu :
+         {*dir_ / "run/post/solid_000007_s0.vtu", *dir_ / "run/post/snapshot_000007.vtu"}) {
+        vtkNew<vtkXMLUnstructuredGridReader> r;
+        r->SetFileName(vtu.c_str());
+        r->Update();
+        vtkFieldData* fd = r->GetOutput()->GetFieldData();
+        ASSERT_NE(fd->GetArray("TimeValue"), nullptr) << vtu;
+        EXPECT_EQ(fd->GetArray("TimeValue")->GetTuple1(0), snap.time);
+        auto* sets = vtkStringArray::SafeDownCast(fd->GetAbstractArray("set_names"));
+        ASSERT_NE(sets, nullptr) << vtu;
+        ASSERT_EQ(sets->GetNumberOfValues(), 2);
+        EXPECT_EQ(sets->GetValue(0), "clamp");
+        EXPECT_EQ(sets->GetValue(1), "load");
+        EXPECT_NE(fd->GetAbstractArray("body_names"), nullptr) << vtu;
+        auto* units = vtkStringArray::SafeDownCast(fd->GetAbstractArray("units"));
+        ASSERT_NE(units, nullptr) << vtu;
+        EXPECT_GE(units->LookupValue("stress=Pa"), 0);
+    }
+    // gsph-post says where the nodes came from and how the volume compares with Σ V J.
+    EXPECT_NE(solidLine_.find("1 spaces, 320 hexahedra, nodes from"), std::string::npos)
+        << solidLine_;
+    EXPECT_NE(solidLine_.find("solid volume: reference"), std::string::npos) << solidLine_;
+}
+
+// A particle file without nodes (an older gsph-preproc's) still gives the solid, from nodes
+// estimated from the particles, and gsph-post says so.
+TEST_F(PostRun, OldParticleFileWithoutNodesStillGivesTheSolid) {
+    EXPECT_NE(oldFileOutput_.find("nodes estimated from the particles: no /spaces/nodes in"),
+              std::string::npos)
+        << oldFileOutput_;
+    vtkNew<vtkXMLUnstructuredGridReader> reader;
+    reader->SetFileName((*dir_ / "post_old/solid_000010_s0.vtu").c_str());
+    reader->Update();
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 320);
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 21 * 5 * 5);
+}
+
+// A particle file given with --particles that does not belong to the run is an error.
+TEST_F(PostRun, AnotherRunsParticleFileIsAClearError) {
+    TempDir other;
+    auto r = runCommand(std::string(GSPH_PREPROC_EXE) + " " +
+                        (test::kSourceDir / "geometries/graded_bar.geo").string() +
+                        " --set refine=2 -o " + (other / "p.h5").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = runCommand(std::string(GSPH_POST_EXE) + " " + (*dir_ / "run").string() + " -o " +
+                   (other / "post").string() + " --no-pictures --particles " +
+                   (other / "p.h5").string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("not the run's particle file"), std::string::npos) << r.err;
 }
 
 // run.pvd and cracks.pvd list every snapshot with its /time as the timestep (what ParaView

@@ -162,6 +162,28 @@ TEST(ParticleFile, WithoutLatticeIndex) {
     EXPECT_TRUE(readParticleFile(dir / "p.h5").latticeIndex.empty());
 }
 
+// The lattice nodes (since 1.3): space after space, a periodic index with n nodes, read back
+// exactly by both readers; a count that does not fit the spaces is refused.
+TEST(ParticleFile, NodesRoundTripAndTheirCountIsChecked) {
+    test::TempDir dir;
+    ParticleFile f = sampleFile();
+    f.spaces[0].periodic = {false, true, false};
+    std::size_t expected = 0;
+    for (const LatticeSpace& s : f.spaces)
+        expected += static_cast<std::size_t>(s.cells[0] + (s.periodic[0] ? 0 : 1)) *
+                    (s.cells[1] + (s.periodic[1] ? 0 : 1)) * (s.cells[2] + (s.periodic[2] ? 0 : 1));
+    ASSERT_EQ(nodeCount(f.spaces), expected);
+    for (std::size_t r = 0; r < expected; ++r)
+        f.nodes.push_back(Vec3(0.1 * r, 1.0 / (r + 1), -3.0));
+    EXPECT_EQ(nodeRow(f.spaces[0], 0, f.spaces[0].cells[1], 0), nodeRow(f.spaces[0], 0, 0, 0));
+    writeParticleFile(dir / "p.h5", f);
+    EXPECT_TRUE(bitwiseEqual(readParticleFile(dir / "p.h5").nodes, f.nodes));
+    EXPECT_TRUE(bitwiseEqual(readParticleFileIsolated(dir / "p.h5").nodes, f.nodes));
+    f.nodes.pop_back();
+    EXPECT_THROW(writeParticleFile(dir / "q.h5", f), InputError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "q.h5"));
+}
+
 TEST(ParticleFile, SameDataGivesSameBytes) {
     test::TempDir dir;
     writeParticleFile(dir / "a.h5", sampleFile());
@@ -189,7 +211,7 @@ TEST(ParticleFile, ReadableByH5py) {
     const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
     // Python prints a float in its shortest round-trip form: compare by value, exactly.
-    EXPECT_NE(out.find("gsph-particles 1.2 SI"), std::string::npos) << out;
+    EXPECT_NE(out.find("gsph-particles 1.3 SI"), std::string::npos) << out;
     EXPECT_NE(out.find("(7, 3) (7, 3) (7,) (7, 3)"), std::string::npos) << out;
     EXPECT_NE(out.find("[3, 1, 1] [1, 0, 0]"), std::string::npos) << out;
     EXPECT_NE(out.find("['clamp', 'empty', 'tip face'] [4, 5, 6]"), std::string::npos) << out;
@@ -270,7 +292,7 @@ TEST(ParticleFile, OversetReadableByH5pyAndFormat10StillReads) {
     int status = 0;
     const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
-    EXPECT_EQ(out, "1.2 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
+    EXPECT_EQ(out, "1.3 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
     const ParticleFile old = readParticleFile(dir / "p.h5");
     EXPECT_TRUE(old.transient.empty());
     EXPECT_EQ(old.overset.size(), 0u);

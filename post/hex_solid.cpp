@@ -1,0 +1,310 @@
+// SPDX-License-Identifier: MIT
+#include "hex_solid.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "core/error.hpp"
+#include "io/child_process.hpp"
+#include "io/hdf5_file.hpp"
+
+namespace gsph::post {
+namespace {
+
+// Lattice offsets (i, j, k) of the corners in VTK_HEXAHEDRON order.
+constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                               {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+// The same corners mirrored in k (a left-handed frame).
+constexpr int kMirrored[8] = {4, 5, 6, 7, 0, 1, 2, 3};
+
+using Cell = std::array<int, 3>;
+
+std::string point(const Vec3& X) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.9g, %.9g, %.9g)", X[0], X[1], X[2]);
+    return text;
+}
+
+// The particle of each cell of a space (−1: none), cells in lattice order.
+struct SpaceCells {
+    const LatticeSpace* space = nullptr;
+    std::vector<Index> particleAt;
+    std::vector<std::pair<Index, Cell>> particles;  // (particle, its cell), in file order
+
+    std::size_t row(const Cell& c) const {
+        return static_cast<std::size_t>(c[0]) +
+               static_cast<std::size_t>(space->cells[0]) *
+                   (static_cast<std::size_t>(c[1]) +
+                    static_cast<std::size_t>(space->cells[1]) * static_cast<std::size_t>(c[2]));
+    }
+    // The particle of the cell c + step·e_d (wrapped along a periodic index), or −1.
+    Index neighbour(Cell c, int d, int step) const {
+        c[d] += step;
+        const int n = space->cells[d];
+        if (c[d] < 0 || c[d] >= n) {
+            if (!space->periodic[d]) return -1;
+            c[d] = (c[d] % n + n) % n;
+        }
+        return particleAt[row(c)];
+    }
+};
+
+// Reference node positions of a space estimated from its particles (a file without
+// /spaces/nodes): X_n = mean over the cells around n of X_a + M_a (u_n − u_a), M_a = ∂X/∂u by
+// differences of the neighbours' X along the lattice. NaN at nodes of no cell.
+std::vector<Vec3> estimateNodes(const SpaceCells& sc, const std::vector<Vec3>& X,
+                                const std::vector<double>& V) {
+    const LatticeSpace& sp = *sc.space;
+    const auto m = nodeExtent(sp);
+    std::vector<Vec3> sum(m[0] * m[1] * m[2], Vec3::Zero());
+    std::vector<int> count(sum.size(), 0);
+    for (const auto& [a, c] : sc.particles) {
+        Mat3 M = Mat3::Zero();
+        bool have[3] = {false, false, false};
+        for (int d = 0; d < 3; ++d) {
+            const Index plus = sc.neighbour(c, d, 1), minus = sc.neighbour(c, d, -1);
+            if (plus >= 0 && minus >= 0 && plus != minus && plus != a && minus != a) {
+                M.col(d) = 0.5 * (X[plus] - X[minus]);
+            } else if (plus >= 0 && plus != a) {
+                M.col(d) = X[plus] - X[a];
+            } else if (minus >= 0 && minus != a) {
+                M.col(d) = X[a] - X[minus];
+            } else {
+                continue;
+            }
+            have[d] = true;
+        }
+        const int missing = !have[0] + !have[1] + !have[2];
+        if (missing == 1) {  // one cell thick along d: the normal of the others, det M = V_a
+            const int d = !have[0] ? 0 : (!have[1] ? 1 : 2);
+            const Vec3 normal = M.col((d + 1) % 3).cross(M.col((d + 2) % 3));
+            if (normal.squaredNorm() > 0.0) M.col(d) = V[a] / normal.squaredNorm() * normal;
+        }
+        const double h = std::cbrt(V[a]);  // a lone particle or row: a cube of its volume
+        for (int d = 0; d < 3; ++d)
+            if (M.col(d).squaredNorm() == 0.0) M.col(d) = h * Vec3::Unit(d);
+        for (const auto& k : kCorner) {
+            const Vec3 offset(k[0] - 0.5, k[1] - 0.5, k[2] - 0.5);
+            const std::size_t r = nodeRow(sp, c[0] + k[0], c[1] + k[1], c[2] + k[2]);
+            sum[r] += X[a] + M * offset;
+            ++count[r];
+        }
+    }
+    for (std::size_t r = 0; r < sum.size(); ++r)
+        sum[r] = count[r] > 0 ? Vec3(sum[r] / count[r])
+                              : Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    return sum;
+}
+
+}  // namespace
+
+double hexahedronVolume(const std::array<Vec3, 8>& x) {
+    const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
+    double volume = 0.0;
+    for (double xi : g)
+        for (double eta : g)
+            for (double zeta : g) {
+                const double p[3] = {xi, eta, zeta};
+                Mat3 J = Mat3::Zero();
+                for (int c = 0; c < 8; ++c) {
+                    double w[3], dw[3];  // 1-D shape factors and their derivatives
+                    for (int d = 0; d < 3; ++d) {
+                        w[d] = kCorner[c][d] ? p[d] : 1.0 - p[d];
+                        dw[d] = kCorner[c][d] ? 1.0 : -1.0;
+                    }
+                    J.col(0) += dw[0] * w[1] * w[2] * x[c];
+                    J.col(1) += w[0] * dw[1] * w[2] * x[c];
+                    J.col(2) += w[0] * w[1] * dw[2] * x[c];
+                }
+                volume += J.determinant() / 8.0;  // 8 points, weight 1/8 each on [0, 1]³
+            }
+    return volume;
+}
+
+double hexahedraVolume(const SolidPiece& piece, const std::vector<Vec3>& nodes) {
+    double total = 0.0;
+    for (const auto& hex : piece.hexes) {
+        std::array<Vec3, 8> x;
+        for (int c = 0; c < 8; ++c) x[c] = nodes[static_cast<std::size_t>(hex[c])];
+        total += hexahedronVolume(x);
+    }
+    return total;
+}
+
+HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std::string& source) {
+    const std::size_t n = X.size();
+    if (static_cast<std::size_t>(f.size()) != n)
+        throw InputError(source + ": " + std::to_string(f.size()) +
+                         " particles, the run's snapshots have " + std::to_string(n) +
+                         " (not the run's particle file)");
+    double scale = 0.0;
+    for (const Vec3& p : X) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    for (std::size_t a = 0; a < n; ++a)
+        if (!((f.X[a] - X[a]).norm() <= 1e-9 * scale))
+            throw InputError(source + ": particle " + std::to_string(a) + " lies at " +
+                             point(f.X[a]) + ", in the run's snapshots at " + point(X[a]) +
+                             " (not the run's particle file)");
+    volume_ = f.volume;
+    for (double V : volume_) particleVolume_ += V;
+    estimated_ = f.nodes.empty();
+
+    // The particles of each space and their cells (lattice_index, or the rank in the space).
+    std::vector<SpaceCells> spaces(f.spaces.size());
+    std::vector<std::size_t> rank(f.spaces.size(), 0);
+    for (std::size_t s = 0; s < spaces.size(); ++s) {
+        const auto& c = f.spaces[s].cells;
+        spaces[s].space = &f.spaces[s];
+        spaces[s].particleAt.assign(static_cast<std::size_t>(c[0]) * c[1] * c[2], -1);
+    }
+    for (std::size_t a = 0; a < n; ++a) {
+        const auto s = static_cast<std::size_t>(f.space[a]);
+        SpaceCells& sc = spaces[s];
+        Cell c;
+        if (!f.latticeIndex.empty()) {
+            c = {f.latticeIndex[a][0], f.latticeIndex[a][1], f.latticeIndex[a][2]};
+        } else {
+            const auto& cells = f.spaces[s].cells;
+            const std::size_t r = rank[s]++;
+            c = {static_cast<int>(r % cells[0]), static_cast<int>(r / cells[0] % cells[1]),
+                 static_cast<int>(r / cells[0] / cells[1])};
+        }
+        Index& at = sc.particleAt[sc.row(c)];
+        if (at >= 0)
+            throw InputError(source + ": particles " + std::to_string(at) + " and " +
+                             std::to_string(a) + " are in one cell of space " + std::to_string(s));
+        at = static_cast<Index>(a);
+        sc.particles.emplace_back(static_cast<Index>(a), c);
+    }
+
+    std::size_t firstNode = 0;  // of the space in f.nodes
+    for (std::size_t s = 0; s < spaces.size(); ++s) {
+        const SpaceCells& sc = spaces[s];
+        const LatticeSpace& sp = f.spaces[s];
+        const auto m = nodeExtent(sp);
+        const std::size_t rows = m[0] * m[1] * m[2];
+        std::vector<Vec3> reference;
+        if (estimated_ && !sc.particles.empty()) reference = estimateNodes(sc, f.X, f.volume);
+        if (!estimated_)
+            reference.assign(f.nodes.begin() + static_cast<std::ptrdiff_t>(firstNode),
+                             f.nodes.begin() + static_cast<std::ptrdiff_t>(firstNode + rows));
+        firstNode += rows;
+        if (sc.particles.empty()) continue;
+
+        SolidPiece piece;
+        piece.space = static_cast<Index>(s);
+        piece.body = f.body[static_cast<std::size_t>(sc.particles.front().first)];
+        std::vector<Index> idOfRow(rows, -1);
+        for (const auto& [a, c] : sc.particles) {
+            std::array<Index, 8> hex;
+            for (int k = 0; k < 8; ++k) {
+                const std::size_t r =
+                    nodeRow(sp, c[0] + kCorner[k][0], c[1] + kCorner[k][1], c[2] + kCorner[k][2]);
+                if (idOfRow[r] < 0) {
+                    idOfRow[r] = static_cast<Index>(piece.nodeX.size());
+                    piece.nodeX.push_back(reference[r]);
+                    piece.cellsAround.push_back(0);
+                }
+                hex[k] = idOfRow[r];
+                ++piece.cellsAround[static_cast<std::size_t>(hex[k])];
+            }
+            piece.hexes.push_back(hex);
+            piece.particle.push_back(a);
+        }
+        // A left-handed lattice frame (det ∂X/∂u < 0) would turn every cell inside out.
+        if (hexahedraVolume(piece, piece.nodeX) < 0.0)
+            for (auto& hex : piece.hexes) {
+                const std::array<Index, 8> h = hex;
+                for (int k = 0; k < 8; ++k) hex[k] = h[kMirrored[k]];
+            }
+        pieces_.push_back(std::move(piece));
+    }
+}
+
+std::size_t HexSolid::hexahedra() const {
+    std::size_t total = 0;
+    for (const SolidPiece& p : pieces_) total += p.hexes.size();
+    return total;
+}
+
+double HexSolid::referenceVolume() const {
+    double total = 0.0;
+    for (const SolidPiece& p : pieces_) total += hexahedraVolume(p, p.nodeX);
+    return total;
+}
+
+double HexSolid::particleVolume(const Snapshot& s) const {
+    double total = 0.0;
+    for (std::size_t a = 0; a < volume_.size() && a < s.F.size(); ++a)
+        total += volume_[a] * s.F[a].determinant();
+    return total;
+}
+
+double HexSolid::currentVolume(const Snapshot& s) const {
+    double total = 0.0;
+    for (const SolidPiece& p : pieces_) total += hexahedraVolume(p, currentNodes(p, s));
+    return total;
+}
+
+std::vector<Vec3> HexSolid::currentNodes(const SolidPiece& piece, const Snapshot& s) const {
+    std::vector<Vec3> x(piece.nodeX.size(), Vec3::Zero());
+    for (std::size_t h = 0; h < piece.hexes.size(); ++h) {
+        const auto a = static_cast<std::size_t>(piece.particle[h]);
+        for (const Index node : piece.hexes[h]) {
+            const auto i = static_cast<std::size_t>(node);
+            x[i] += s.x[a] + s.F[a] * (piece.nodeX[i] - s.X[a]);
+        }
+    }
+    for (std::size_t i = 0; i < x.size(); ++i) x[i] /= piece.cellsAround[i];
+    return x;
+}
+
+ParticleFileLocation locateParticleFile(const std::filesystem::path& runDir,
+                                        const std::filesystem::path& given) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (!given.empty()) {
+        if (fs::is_regular_file(given, ec)) return {given, "given with --particles"};
+        return {std::nullopt, given.string() + ": no such particle file"};
+    }
+    const fs::path checkpoint = runDir / "checkpoint.h5";
+    std::string recorded;
+    if (fs::is_regular_file(checkpoint, ec)) {
+        try {
+            const std::string bytes = runInChild(
+                checkpoint.string(), "the checkpoint reader",
+                [&](ByteWriter& w) {
+                    const h5::File h5(checkpoint, h5::File::Mode::ReadOnly);
+                    const std::vector<std::string> roles = h5.readStrings("/run/inputs/role");
+                    const std::vector<std::string> files = h5.readStrings("/run/inputs/file");
+                    for (std::size_t i = 0; i < roles.size() && i < files.size(); ++i)
+                        if (roles[i] == "particles") w.text(files[i]);
+                },
+                [&](const std::string& reason) {
+                    throw IoError(checkpoint.string() + ": crashed HDF5's reader (" + reason + ")");
+                },
+                fileReadDeadline(checkpoint));
+            if (!bytes.empty()) recorded = ByteReader(bytes, checkpoint.string()).text();
+        } catch (const std::exception&) {  // an unreadable checkpoint: try the next place
+        }
+    }
+    if (!recorded.empty()) {
+        const fs::path named(recorded);
+        if (fs::is_regular_file(named, ec)) return {named, "named by " + checkpoint.string()};
+        if (fs::is_regular_file(runDir / named.filename(), ec))
+            return {runDir / named.filename(), "named by " + checkpoint.string()};
+    }
+    if (fs::is_regular_file(runDir / "particles.h5", ec))
+        return {runDir / "particles.h5", "found in the run folder"};
+    return {std::nullopt,
+            recorded.empty()
+                ? "no particle file found (no checkpoint.h5 naming it, no particles.h5 in " +
+                      runDir.string() + "); pass --particles FILE"
+                : "the run's particle file " + recorded +
+                      " (named by its checkpoint.h5) is gone; pass --particles FILE"};
+}
+
+}  // namespace gsph::post
