@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "io/child_process.hpp"
 #include "io/hdf5_file.hpp"
+#include "spaces/hexahedron.hpp"
 
 namespace gsph::post {
 namespace {
@@ -103,26 +104,7 @@ std::vector<Vec3> estimateNodes(const SpaceCells& sc, const std::vector<Vec3>& X
 }  // namespace
 
 double hexahedronVolume(const std::array<Vec3, 8>& x) {
-    const double g[2] = {0.5 - 0.5 / std::sqrt(3.0), 0.5 + 0.5 / std::sqrt(3.0)};
-    double volume = 0.0;
-    for (double xi : g)
-        for (double eta : g)
-            for (double zeta : g) {
-                const double p[3] = {xi, eta, zeta};
-                Mat3 J = Mat3::Zero();
-                for (int c = 0; c < 8; ++c) {
-                    double w[3], dw[3];  // 1-D shape factors and their derivatives
-                    for (int d = 0; d < 3; ++d) {
-                        w[d] = kCorner[c][d] ? p[d] : 1.0 - p[d];
-                        dw[d] = kCorner[c][d] ? 1.0 : -1.0;
-                    }
-                    J.col(0) += dw[0] * w[1] * w[2] * x[c];
-                    J.col(1) += w[0] * dw[1] * w[2] * x[c];
-                    J.col(2) += w[0] * w[1] * dw[2] * x[c];
-                }
-                volume += J.determinant() / 8.0;  // 8 points, weight 1/8 each on [0, 1]³
-            }
-    return volume;
+    return hexVolume({x[0], x[1], x[3], x[2], x[4], x[5], x[7], x[6]});  // VTK → corner bits
 }
 
 double hexahedraVolume(const SolidPiece& piece, const std::vector<Vec3>& nodes) {

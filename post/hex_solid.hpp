@@ -72,8 +72,8 @@ class HexSolid {
     bool estimated_ = false;
 };
 
-/// Exact volume of a trilinear hexahedron with corners in VTK_HEXAHEDRON order (2×2×2 Gauss
-/// points of det J) [m³]; negative if it is inverted.
+/// Exact volume (spaces/hexahedron.hpp) of a trilinear hexahedron with corners in
+/// VTK_HEXAHEDRON order [m³]; negative if it is inverted.
 double hexahedronVolume(const std::array<Vec3, 8>& corners);
 
 /// Σ of the hexahedra's exact volumes with their nodes at `nodes` [m³].

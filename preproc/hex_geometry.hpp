@@ -5,12 +5,14 @@
 // Corners are given in corner-bit order (hex_topology.hpp): X_c with c = di + 2dj + 4dk, so
 // corner c sits at ξ = (2di−1, 2dj−1, 2dk−1). Invariants: hexCentre is X(0,0,0) = the mean of
 // the corners; hexVolume integrates det ∂X/∂ξ with 2×2×2 Gauss points, exact for trilinear maps
-// (det J is at most quadratic in each ξ); a hex is valid when det J > 0 at all 8 corners.
+// (det J is at most quadratic in each ξ; spaces/hexahedron.hpp); a hex is valid when det J > 0
+// at all 8 corners.
 #pragma once
 
 #include <array>
 
 #include "core/types.hpp"
+#include "spaces/hexahedron.hpp"  // hexVolume
 
 namespace gsph::preproc {
 
@@ -33,9 +35,6 @@ double jacobianCondition(const Mat3& J, int skipAxis = -1);
 
 /// ∂X/∂ξ at ξ ∈ [−1,1]³ (columns: derivatives along ξ1, ξ2, ξ3).
 Mat3 hexJacobian(const HexCorners& x, const Vec3& xi);
-
-/// Exact volume of the trilinear hex: Σ over the 2×2×2 Gauss points of det J (weights 1).
-double hexVolume(const HexCorners& x);
 
 /// Smallest det J over the 8 corners (≤ 0: the hex is inverted or degenerate).
 double minCornerJacobian(const HexCorners& x);
