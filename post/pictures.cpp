@@ -107,24 +107,16 @@ vtkSmartPointer<vtkUnstructuredGrid> pieceWithField(const HexSolid& solid, const
         hi = hi.cwiseMax(p);
     }
     const auto nc = static_cast<vtkIdType>(piece.hexes.size());
-    vtkNew<vtkIdTypeArray> offsets, connectivity;
-    offsets->SetNumberOfTuples(nc + 1);
-    connectivity->SetNumberOfTuples(8 * nc);
     vtkNew<vtkDoubleArray> values;
     values->SetName(field.c_str());
     values->SetNumberOfTuples(nc);
-    for (vtkIdType h = 0; h < nc; ++h) {
-        const auto k = static_cast<std::size_t>(h);
-        offsets->SetValue(h, 8 * h);
-        for (int c = 0; c < 8; ++c) connectivity->SetValue(8 * h + c, piece.hexes[k][c]);
-        values->SetValue(h, scalarField(s, static_cast<std::size_t>(piece.particle[k]), field));
-    }
-    offsets->SetValue(nc, 8 * nc);
-    vtkNew<vtkCellArray> cells;
-    cells->SetData(offsets, connectivity);
+    for (vtkIdType h = 0; h < nc; ++h)
+        values->SetValue(
+            h, scalarField(s, static_cast<std::size_t>(piece.particle[static_cast<std::size_t>(h)]),
+                           field));
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(points);
-    grid->SetCells(VTK_HEXAHEDRON, cells);
+    grid->SetCells(VTK_HEXAHEDRON, hexahedronCells(piece));
     grid->GetCellData()->SetScalars(values);
     return grid;
 }

@@ -307,11 +307,25 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap, const Run
     writeXml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
 }
 
+vtkSmartPointer<vtkCellArray> hexahedronCells(const SolidPiece& piece) {
+    const auto nc = static_cast<vtkIdType>(piece.hexes.size());
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfTuples(nc + 1);
+    connectivity->SetNumberOfTuples(8 * nc);
+    vtkIdType* off = offsets->GetPointer(0);
+    vtkIdType* con = connectivity->GetPointer(0);
+    for (vtkIdType h = 0; h <= nc; ++h) off[h] = 8 * h;
+    for (vtkIdType h = 0; h < nc; ++h)
+        for (int c = 0; c < 8; ++c) con[8 * h + c] = piece.hexes[static_cast<std::size_t>(h)][c];
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->SetData(offsets, connectivity);
+    return cells;
+}
+
 vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const SolidPiece& piece,
                                                const Snapshot& snap, const RunLabels& labels) {
     const std::vector<Vec3> x = solid.currentNodes(piece, snap);
     const auto np = static_cast<vtkIdType>(x.size());
-    const auto nc = static_cast<vtkIdType>(piece.hexes.size());
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(np);
@@ -325,19 +339,9 @@ vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const Soli
             up[3 * i + d] = x[k][d] - piece.nodeX[k][d];
         }
     }
-    vtkNew<vtkIdTypeArray> offsets, connectivity;
-    offsets->SetNumberOfTuples(nc + 1);
-    connectivity->SetNumberOfTuples(8 * nc);
-    vtkIdType* off = offsets->GetPointer(0);
-    vtkIdType* con = connectivity->GetPointer(0);
-    for (vtkIdType h = 0; h <= nc; ++h) off[h] = 8 * h;
-    for (vtkIdType h = 0; h < nc; ++h)
-        for (int c = 0; c < 8; ++c) con[8 * h + c] = piece.hexes[static_cast<std::size_t>(h)][c];
-    vtkNew<vtkCellArray> cells;
-    cells->SetData(offsets, connectivity);
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(points);
-    grid->SetCells(VTK_HEXAHEDRON, cells);
+    grid->SetCells(VTK_HEXAHEDRON, hexahedronCells(piece));
     grid->GetPointData()->AddArray(nodeDisplacement);
     addParticleArrays(grid->GetCellData(), snap, Rows{&piece.particle, 0});
     addFieldData(grid, snap, labels);

@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include <vtkCellArray.h>
 #include <vtkSmartPointer.h>
 
 #include "crack_surface.hpp"
@@ -44,6 +45,9 @@ struct RunLabels {
 /// The particles as a point cloud (a VTK_VERTEX per particle).
 void writeVtu(const std::filesystem::path& path, const Snapshot& snapshot,
               const RunLabels& labels = {});
+
+/// The hexahedra of a piece as a VTK cell array (VTK_HEXAHEDRON node ids).
+vtkSmartPointer<vtkCellArray> hexahedronCells(const SolidPiece& piece);
 
 /// One piece of the solid in a snapshot: its hexahedra at the current node positions, the
 /// particle arrays as cell data, node_displacement (x_n − X_n) as point data.
