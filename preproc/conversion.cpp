@@ -143,6 +143,8 @@ struct Assembly {
     std::vector<double> condition;     // per particle: cond(∂X/∂θ) at its centre
     std::vector<double> inPlane;       // the same without the one-layer axis (1 if none)
     std::vector<double> cornerRatio;   // smallest det ∂X/∂θ at a corner / det at the centre
+    std::vector<Index> block;          // per particle: its block
+    std::vector<Int3> blockCell;       // per particle: its cell in its block's frame
 };
 
 /// The index along which a space is one cell thick (a 2-D slab), or −1.
@@ -201,6 +203,8 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                 pf.space[a] = spaceId;
                 pf.body[a] = space.body;
                 as.particleOfHex[h] = static_cast<Index>(a);
+                as.block[a] = space.blocks[entry];
+                as.blockCell[a] = {i, j, k};
                 as.out.elementOfParticle[a] = mesh.hexTags[h];
                 const auto edges = edgeLengthRange(x);
                 stats.minEdge = std::min(stats.minEdge, edges[0]);
@@ -265,6 +269,8 @@ void compact(const std::vector<char>& keep, Assembly& as) {
     squeeze(as.condition);
     squeeze(as.inPlane);
     squeeze(as.cornerRatio);
+    squeeze(as.block);
+    squeeze(as.blockCell);
     for (Index& p : as.particleOfHex) {
         if (p >= 0) p = newIndex[static_cast<std::size_t>(p)];
     }
@@ -288,7 +294,10 @@ void applyOverset(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
     }
     compact(cutHoles(mesh.source, pf, maps, ranking, stats.spaceVolumes, stats.cuts), as);
     stats.oversetKappa = options.oversetKappa;
-    findTransients(mesh.source, pf, maps, options.oversetKappa, stats.transients);
+    const ParticleOrigins origins{
+        &glued, &blocks, as.block, as.blockCell, as.out.elementOfParticle, stats.spaceVolumes};
+    findTransients(mesh.source, pf, maps, origins, options.oversetKappa, options.transients,
+                   stats.transients);
 }
 
 /// Worst condition number of ∂X/∂θ and smallest corner/centre Jacobian ratio per space; a
@@ -391,6 +400,7 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
         out.stats.minEdge = INFINITY;
         fillUniformLattice(mesh, blocks, glued, bodyOfVolume, adjacency, options.latticeSpacing,
                            out);
+        if (options.onSpaces) options.onSpaces(out.particles, out.stats);
         return out;
     }
 
@@ -415,7 +425,9 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
                 std::vector<char>(n, 0),
                 std::vector<double>(n),
                 std::vector<double>(n),
-                std::vector<double>(n)};
+                std::vector<double>(n),
+                std::vector<Index>(n, -1),
+                std::vector<Int3>(n)};
     std::size_t offset = 0;  // spaces follow each other: sorted by body, then first volume
     for (std::size_t s = 0; s < glued.spaces.size(); ++s) {
         const GluedSpace& space = glued.spaces[s];
@@ -442,6 +454,7 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
                                " search steps: the spaces are consistent but may not be the "
                                "fewest possible");
     }
+    if (options.onSpaces) options.onSpaces(out.particles, out.stats);
     applyOverset(mesh, blocks, glued, options, as);
     buildSets(mesh, adjacency, as.particleOfHex, out);
     reportMetric(as, out);

@@ -18,6 +18,7 @@
 // transient that cannot be located); InputError for a bad priority rule or κ.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -40,12 +41,18 @@ inline constexpr double kCollapsingCell = 1e-2;
 /// extrapolating the map much farther is not trustworthy.
 inline constexpr double kMaxOversetKappa = 3.0;
 
+struct ConversionStats;
+
 struct ConversionOptions {
     std::vector<PriorityRule> priorities;  ///< --priority VOLUME=N (overset.hpp)
     double oversetKappa = 1.5;             ///< --overset-kappa: transients within 2κΔθ
+    TransientRule transients = TransientRule::Automatic;  ///< --transients
     /// --lattice H > 0: instead of one particle per hex, the uniform Cartesian layout of
     /// spacing ≈ H filling each body (uniform_lattice.hpp); 0: the hex layout.
     double latticeSpacing = 0.0;
+    /// Called once the blocks are glued and their particles placed, before hole cutting and
+    /// transients (whose errors name the spaces), so that a tool can report the spaces first.
+    std::function<void(const ParticleFile&, const ConversionStats&)> onSpaces;
 };
 
 /// Worst condition number σmax/σmin of ∂X/∂θ over a space's particles (hex Jacobian at the

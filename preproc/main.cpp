@@ -34,6 +34,7 @@
 #include <csignal>
 #include <future>
 #include <iostream>
+#include <map>
 
 #include "conversion.hpp"
 #include "core/error.hpp"
@@ -118,6 +119,16 @@ int main(int argc, char** argv) {
     app.add_option("--overset-kappa", convertOptions.oversetKappa,
                    "K: particles within 2*K*dtheta of another space's particles are transient "
                    "there (default 1.5: enough for runs with kappa <= K)");
+    const std::map<std::string, gsph::preproc::TransientRule> transientRules = {
+        {"auto", gsph::preproc::TransientRule::Automatic},
+        {"map", gsph::preproc::TransientRule::Map},
+        {"lattice", gsph::preproc::TransientRule::Lattice}};
+    app.add_option("--transients", convertOptions.transients,
+                   "RULE: how a particle near another space gets its theta there: 'map' locates "
+                   "it in that space's isoparametric map extended past its boundary; 'lattice' "
+                   "continues that space's lattice across the block faces the two share; 'auto' "
+                   "(default) the map, and the lattice for a pair of spaces where the map folds")
+        ->transform(CLI::CheckedTransformer(transientRules, CLI::ignore_case));
     app.add_option("--lattice", convertOptions.latticeSpacing,
                    "H [m]: write the uniform Cartesian layout of standard SPH instead (spacing H, "
                    "adjusted per axis to tile each body's bounding box; the sites inside the "
@@ -151,6 +162,12 @@ int main(int argc, char** argv) {
         gsph::preproc::HexMesh mesh = gsph::preproc::readHexMeshInChild(input, options, warnings);
         const auto read = Clock::now();
 
+        if (!quiet) {
+            convertOptions.onSpaces = [&](const gsph::ParticleFile& particles,
+                                          const gsph::preproc::ConversionStats& stats) {
+                gsph::preproc::printSpaces(std::cout, input, applied, output, particles, stats);
+            };
+        }
         gsph::preproc::Conversion conversion = gsph::preproc::convertHexMesh(mesh, convertOptions);
         mesh = {};
         warnings.insert(warnings.end(), conversion.warnings.begin(), conversion.warnings.end());
@@ -166,8 +183,7 @@ int main(int argc, char** argv) {
             const gsph::preproc::Timings timings{seconds(start, read), seconds(read, converted),
                                                  seconds(converted, written),
                                                  seconds(start, written)};
-            gsph::preproc::printSummary(std::cout, output, conversion.particles, conversion.stats,
-                                        timings);
+            gsph::preproc::printSummary(std::cout, conversion.particles, conversion.stats, timings);
         }
         return 0;
     } catch (const std::exception& e) {

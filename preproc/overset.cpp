@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -18,13 +19,6 @@ std::string point(const Vec3& X) {
     char text[96];
     std::snprintf(text, sizeof text, "(%.6g, %.6g, %.6g)", X[0], X[1], X[2]);
     return text;
-}
-
-std::string spaceLabel(std::size_t s, const std::vector<std::vector<int>>& spaceVolumes) {
-    std::string volumes;
-    for (int v : spaceVolumes[s]) volumes += (volumes.empty() ? "" : ",") + std::to_string(v);
-    return "space " + std::to_string(s) + " (gmsh volume" +
-           (spaceVolumes[s].size() == 1 ? " " : "s ") + volumes + ")";
 }
 
 std::vector<Index> bodyOfSpaces(const ParticleFile& pf) {
@@ -61,6 +55,28 @@ std::vector<int> volumesOfRule(const std::string& source, const HexMesh& mesh,
 }
 
 }  // namespace
+
+std::string spaceLabel(std::size_t s, const ParticleFile& pf,
+                       const std::vector<std::vector<int>>& spaceVolumes) {
+    std::string volumes;
+    for (int v : spaceVolumes[s]) {
+        if (!volumes.empty()) volumes += ',';
+        volumes += std::to_string(v);
+    }
+    std::string body;
+    for (Index a = 0; a < pf.size() && body.empty(); ++a) {
+        if (pf.space[a] != static_cast<Index>(s)) continue;
+        const BodyInfo& info = pf.bodies[static_cast<std::size_t>(pf.body[a])];
+        body = " of body ";
+        if (info.name.empty()) {
+            body += std::to_string(pf.body[a]);
+        } else {
+            body.append(1, '\'').append(info.name).append(1, '\'');
+        }
+    }
+    return "space " + std::to_string(s) + body + " (gmsh volume" +
+           (spaceVolumes[s].size() == 1 ? " " : "s ") + volumes + ")";
+}
 
 bool SpaceRanking::outranks(std::size_t t, std::size_t s) const {
     if (priority[t] != priority[s]) return priority[t] > priority[s];
@@ -208,9 +224,9 @@ std::vector<char> cutHoles(const std::string& source, const ParticleFile& pf, co
         if (tiedOverlap[a] < 0) continue;
         const auto s = static_cast<std::size_t>(pf.space[a]);
         const auto t = static_cast<std::size_t>(tiedOverlap[a]);
-        throw MeshError(source + ": " + spaceLabel(s, spaceVolumes) + " and " +
-                        spaceLabel(t, spaceVolumes) + " overlap (particle " + std::to_string(a) +
-                        " at " + point(pf.X[a]) +
+        throw MeshError(source + ": " + spaceLabel(s, pf, spaceVolumes) + " and " +
+                        spaceLabel(t, pf, spaceVolumes) + " overlap (particle " +
+                        std::to_string(a) + " at " + point(pf.X[a]) +
                         " lies in both) with the same priority and the same spacing: which one "
                         "keeps its particles is undecided; give one a higher --priority");
     }
@@ -219,7 +235,7 @@ std::vector<char> cutHoles(const std::string& source, const ParticleFile& pf, co
         kept[static_cast<std::size_t>(pf.space[a])] += cutBy[a] < 0;
     for (Index s = 0; s < spaces; ++s) {
         if (kept[static_cast<std::size_t>(s)] > 0) continue;
-        throw MeshError(source + ": " + spaceLabel(s, spaceVolumes) +
+        throw MeshError(source + ": " + spaceLabel(s, pf, spaceVolumes) +
                         " lies entirely inside spaces that outrank it: hole cutting leaves none of "
                         "its particles; remove it or raise its --priority");
     }
@@ -273,6 +289,18 @@ struct Occupancy {
         }
         return false;
     }
+
+    /// True if u lies in a used cell.
+    bool holds(const Vec3& u) const {
+        std::size_t index = 0;
+        for (int d = 2; d >= 0; --d) {
+            int c = static_cast<int>(std::floor(u[d]));
+            if (periodic[d]) c = ((c % cells[d]) + cells[d]) % cells[d];
+            if (c < 0 || c >= cells[d]) return false;
+            index = index * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(c);
+        }
+        return used[index] != 0;
+    }
 };
 
 Occupancy occupancyOf(const ParticleFile& pf, Index s) {
@@ -293,11 +321,98 @@ Occupancy occupancyOf(const ParticleFile& pf, Index s) {
 
 }  // namespace
 
+namespace {
+
+/// Continued-lattice locations of the particles of space t in space s (overset.hpp): per
+/// particle of t, u in s's frame and the cells it lies beyond the shared face, or none if its
+/// block shares no face with a block of s.
+struct Continuation {
+    std::vector<std::optional<SpaceLocation>> found;
+};
+
+/// The block's entry in its space.
+std::size_t entryOf(const GluedSpace& space, Index block) {
+    const auto it = std::find(space.blocks.begin(), space.blocks.end(), block);
+    return static_cast<std::size_t>(it - space.blocks.begin());
+}
+
+/// Cells a cell of a block's frame lies outside the block (0 inside).
+int cellsOutside(const Int3& cell, const Int3& cells) {
+    int out = 0;
+    for (int d = 0; d < 3; ++d) out = std::max({out, -cell[d], cell[d] - cells[d] + 1});
+    return out;
+}
+
+/// u of particle b (of space t) in space s by the continued lattice, or none.
+std::optional<SpaceLocation> continueLattice(const ParticleFile& pf, const SpaceMaps& maps,
+                                             const ParticleOrigins& origins, Index s, Index b,
+                                             std::vector<Index>& spaceOfBlock) {
+    const GluingResult& glued = *origins.glued;
+    const std::vector<BlockLattice>& blocks = *origins.blocks;
+    const Index B = origins.block[static_cast<std::size_t>(b)];
+    const Int3& cb = origins.blockCell[static_cast<std::size_t>(b)];
+    std::optional<SpaceLocation> best;
+    int bestDepth = 0;
+    for (const SharedFace& f : glued.interfaces) {
+        // The face seen from B: B → A with A in space s.
+        Index A = -1;
+        LatticeTransform toA;
+        if (f.b == B && spaceOfBlock[static_cast<std::size_t>(f.a)] == s) {
+            A = f.a;
+            toA = f.bToA;
+        } else if (f.a == B && spaceOfBlock[static_cast<std::size_t>(f.b)] == s) {
+            A = f.b;
+            toA = f.bToA.inverse();
+        }
+        if (A < 0) continue;
+        const Int3 inA = toA.cell(cb);
+        const int depth = cellsOutside(inA, blocks[static_cast<std::size_t>(A)].cells);
+        if (best && depth >= bestDepth) continue;
+        const GluedSpace& space = glued.spaces[static_cast<std::size_t>(s)];
+        const std::size_t entry = entryOf(space, A);
+        const Int3 c = space.cellOf(entry, inA);
+        SpaceLocation loc;
+        double outside2 = 0.0;
+        for (int d = 0; d < 3; ++d) {
+            loc.u[d] = c[d] + 0.5;
+            if (space.periodic[d]) continue;
+            const double out = std::max({0.0, -loc.u[d], loc.u[d] - space.cells[d]});
+            outside2 += out * out;
+        }
+        loc.outside = std::sqrt(outside2);
+        loc.cell = c;
+        // ∂X/∂u_s = ∂X/∂u_B R⁻¹ with R a rotation: det is b's own (ξ ∈ [−1,1]: ∂X/∂u = 2 ∂X/∂ξ).
+        const HexCorners x =
+            maps[static_cast<std::size_t>(pf.space[b])]->corners(pf.latticeIndex[b]);
+        loc.detJ = 8.0 * hexJacobian(x, Vec3::Zero()).determinant();
+        best = loc;
+        bestDepth = depth;
+    }
+    return best;
+}
+
+}  // namespace
+
 void findTransients(const std::string& source, ParticleFile& pf, const SpaceMaps& maps,
-                    double kappa, std::vector<TransientReport>& reports) {
+                    const ParticleOrigins& origins, double kappa, TransientRule rule,
+                    std::vector<TransientReport>& reports) {
     const double reach = 2.0 * kappa;  // one kernel support 2h = 2κΔθ, in lattice units
     const std::vector<Index> body = bodyOfSpaces(pf);
     const auto spaces = static_cast<Index>(pf.spaces.size());
+    std::vector<Index> spaceOfBlock(origins.blocks->size(), -1);
+    for (std::size_t s = 0; s < origins.glued->spaces.size(); ++s) {
+        for (Index blk : origins.glued->spaces[s].blocks) {
+            spaceOfBlock[static_cast<std::size_t>(blk)] = static_cast<Index>(s);
+        }
+    }
+    // shares[s][t]: a block of t shares a face with a block of s.
+    std::vector<std::vector<char>> shares(static_cast<std::size_t>(spaces),
+                                          std::vector<char>(static_cast<std::size_t>(spaces), 0));
+    for (const SharedFace& f : origins.glued->interfaces) {
+        const auto sa = static_cast<std::size_t>(spaceOfBlock[static_cast<std::size_t>(f.a)]);
+        const auto sb = static_cast<std::size_t>(spaceOfBlock[static_cast<std::size_t>(f.b)]);
+        shares[sa][sb] = shares[sb][sa] = 1;
+    }
     OversetEntries& o = pf.overset;
     o = OversetEntries{};
     o.kappa = kappa;
@@ -307,53 +422,97 @@ void findTransients(const std::string& source, ParticleFile& pf, const SpaceMaps
         const SpaceMap* map = maps[static_cast<std::size_t>(s)].get();
         if (map == nullptr) continue;
         const Occupancy occupancy = occupancyOf(pf, s);
+        // Per home space t: take the continued lattice?
+        std::vector<char> continued(static_cast<std::size_t>(spaces), 0);
+        for (Index t = 0; t < spaces; ++t) {
+            continued[static_cast<std::size_t>(t)] =
+                rule == TransientRule::Lattice &&
+                shares[static_cast<std::size_t>(s)][static_cast<std::size_t>(t)];
+        }
         parallelFor(pf.size(), [&](std::ptrdiff_t b) {
             found[b].reset();
-            if (pf.space[b] == s || pf.body[b] != body[s]) return;
+            if (pf.space[b] == s || pf.body[b] != body[s] || continued[pf.space[b]]) return;
             std::optional<SpaceLocation> loc = map->locate(pf.X[b], reach);
+            if (loc && occupancy.near(loc->u, reach)) found[b] = loc;
+        });
+        if (rule == TransientRule::Automatic) {
+            for (Index b = 0; b < pf.size(); ++b) {
+                const auto t = static_cast<std::size_t>(pf.space[b]);
+                if (found[b] && (found[b]->unresolved || !(found[b]->detJ > 0.0)) &&
+                    shares[static_cast<std::size_t>(s)][t]) {
+                    continued[t] = 1;
+                }
+            }
+        }
+        parallelFor(pf.size(), [&](std::ptrdiff_t b) {
+            if (pf.space[b] == s || pf.body[b] != body[s] || !continued[pf.space[b]]) return;
+            found[b].reset();
+            std::optional<SpaceLocation> loc =
+                continueLattice(pf, maps, origins, s, static_cast<Index>(b), spaceOfBlock);
             if (loc && occupancy.near(loc->u, reach)) found[b] = loc;
         });
         std::map<Index, TransientReport> bySpace;  // home space of b → report
         for (Index t = 0; t < spaces; ++t) {
             if (t != s && body[t] == body[s] && maps[static_cast<std::size_t>(t)]) {
-                bySpace[t] = TransientReport{t, s, 0, 0.0, 0};
+                bySpace[t] =
+                    TransientReport{t, s, 0, continued[static_cast<std::size_t>(t)] != 0, 0.0, 0};
             }
         }
-        const double dtheta = pf.spaces[static_cast<std::size_t>(s)].dtheta;
         char reachText[32];
         std::snprintf(reachText, sizeof reachText, "%g", reach);
-        const std::string remedy = ": space " + std::to_string(s) +
-                                   "'s cells next to its boundary are too coarse or distorted to "
+        const std::string remedy = ": " +
+                                   spaceLabel(static_cast<std::size_t>(s), pf, origins.volumes) +
+                                   " has cells next to its boundary too coarse or distorted to "
                                    "reach this far (2 kappa = " +
                                    reachText +
-                                   " cells); refine them, move the interface, or lower "
-                                   "--overset-kappa";
+                                   " cells), and no block face it shares with the particle's "
+                                   "space to continue across; refine them, move the interface, "
+                                   "or lower --overset-kappa";
+        auto where = [&](Index b) {
+            return "particle " + std::to_string(b) + " at X = " + point(pf.X[b]) +
+                   " (gmsh element " +
+                   std::to_string(origins.element[static_cast<std::size_t>(b)]) + ") of " +
+                   spaceLabel(static_cast<std::size_t>(pf.space[b]), pf, origins.volumes) +
+                   " is within one kernel support of " +
+                   spaceLabel(static_cast<std::size_t>(s), pf, origins.volumes) +
+                   " but cannot be located there: ";
+        };
+        // Cells of s taken by a transient of a continued pair: two may not share one.
+        std::map<std::array<long, 3>, Index> taken;
         for (Index b = 0; b < pf.size(); ++b) {
             if (!found[b]) continue;
             const SpaceLocation& loc = *found[b];
             if (loc.unresolved) {
-                throw MeshError(
-                    source + ": particle " + std::to_string(b) + " of space " +
-                    std::to_string(pf.space[b]) + " at " + point(pf.X[b]) +
-                    " is within one kernel support of space " + std::to_string(s) +
-                    " but cannot be located there: the Newton iterations of the inverse map stall "
-                    "near theta = " +
-                    point(loc.u * dtheta) + " (the map is singular or folds there)" + remedy);
+                throw MeshError(source + ": " + where(b) +
+                                "the Newton iterations of the inverse map stall near theta = " +
+                                point(loc.u) + " (the map is singular or folds there)" + remedy);
             }
             if (!(loc.detJ > 0.0)) {
-                throw MeshError(
-                    source + ": particle " + std::to_string(b) + " of space " +
-                    std::to_string(pf.space[b]) + " at " + point(pf.X[b]) +
-                    " is within one kernel support of space " + std::to_string(s) +
-                    " but cannot be located there: space " + std::to_string(s) +
-                    "'s map, extended past its boundary to reach it, folds (det dX/dtheta <= 0 "
-                    "at theta = " +
-                    point(loc.u * dtheta) + ")" + remedy);
+                throw MeshError(source + ": " + where(b) +
+                                "the map, extended past the boundary to reach it, folds (det "
+                                "dX/dtheta <= 0 at theta = " +
+                                point(loc.u) + ")" + remedy);
+            }
+            if (continued[static_cast<std::size_t>(pf.space[b])]) {
+                const std::array<long, 3> key = {std::lround(loc.u[0] * 2.0),
+                                                 std::lround(loc.u[1] * 2.0),
+                                                 std::lround(loc.u[2] * 2.0)};
+                const auto [it, added] = taken.try_emplace(key, b);
+                if (!added || occupancy.holds(loc.u)) {
+                    throw MeshError(source + ": " + where(b) +
+                                    "continued across a shared block face, it lands on the "
+                                    "theta = " +
+                                    point(loc.u) + " of particle " +
+                                    std::to_string(added ? Index(-1) : it->second) +
+                                    "; give the blocks around it other --priority or mesh the "
+                                    "region as one block");
+                }
             }
             o.particle.push_back(b);
             o.space.push_back(s);
-            o.theta.push_back(loc.u * dtheta);
+            o.theta.push_back(loc.u * pf.spaces[static_cast<std::size_t>(s)].dtheta);
             // DESIGN §3: ω = V / det(∂X/∂θ), with ∂X/∂θ = (∂X/∂u)/Δθ.
+            const double dtheta = pf.spaces[static_cast<std::size_t>(s)].dtheta;
             o.omega.push_back(pf.volume[b] * dtheta * dtheta * dtheta / loc.detJ);
             pf.transient[b] = 1;
             TransientReport& r = bySpace[pf.space[b]];

@@ -11,10 +11,22 @@
 // meshed region of a space of its body that outranks its own. Cutting whole cells leaves no
 // gap and no overlap when the overlap is aligned with the cut space's cells; otherwise the gap
 // and the doubly counted volume are measured (per pair) and reported.
-// Transients: particle b is transient in space s (another space of its body) when X_b has
-// lattice coordinates u in s (s's map, extended at most 2κ cells past its boundary) with
-// min over s's kept particles a of |θ_s(b) − θ_a| < 2κΔθ_s; its entry stores θ_s(b) = u Δθ_s
-// and ω = V_b / det(∂X/∂θ_s) (DESIGN §3).
+// Transients: particle b is transient in space s (another space of its body) when it has
+// lattice coordinates u in s with min over s's kept particles a of |θ_s(b) − θ_a| < 2κΔθ_s; its
+// entry stores θ_s(b) = u Δθ_s and ω = V_b / det(∂X/∂θ_s) (DESIGN §3). Two ways give u:
+// - the extended map: X_b located in s's isoparametric map, extended at most 2κ cells past its
+//   boundary (space_map.hpp). Smooth where s's boundary cells are, it folds past concave bends
+//   of s's boundary (a cubed sphere's core and caps) and stalls there;
+// - the continued lattice: where b's block shares a whole face with a block of s, s's lattice
+//   continues across that face onto b's block node for node, exactly as it would if the two
+//   blocks were glued into one space: u is b's cell centre under that integer map, and
+//   ∂X/∂θ_s at b is b's own hex Jacobian, rotated. It never folds. Of several faces b's block
+//   shares with s, the one b lies fewest cells beyond wins (then the first in gluing order).
+//   Around a block edge where three blocks meet, the continued lattices leave a wedge of θ
+//   empty, as a re-entrant corner does.
+// TransientRule::Automatic takes the extended map, and the continued lattice for every pair of
+// spaces (s, home of b) that shares faces and where the map fails for one of the pair's
+// particles: one rule per pair, so no two transients of a pair come from different rules.
 #pragma once
 
 #include <memory>
@@ -66,12 +78,35 @@ struct HoleCutReport {
 struct TransientReport {
     Index space = 0, in = 0;
     long particles = 0;
+    bool continued = false;         ///< θ from the continued lattice (else from the extended map)
     double maxExtrapolation = 0.0;  ///< largest distance of θ past `in`'s lattice box [Δθ]
     long ambiguous = 0;             ///< located by two extensions; the nearer one kept
 };
 
 /// Maps of the spaces of bodies with more than one space (null for the others).
 using SpaceMaps = std::vector<std::unique_ptr<SpaceMap>>;
+
+/// `--transients`: how transients get their θ in another space (see above).
+enum class TransientRule {
+    Automatic,  ///< the extended map; the continued lattice per pair where the map fails
+    Map,        ///< the extended map only
+    Lattice,    ///< the continued lattice for every pair of spaces sharing a face; else the map
+};
+
+/// Where the particles came from, for continuing a lattice across shared block faces and for
+/// naming a particle in an error.
+struct ParticleOrigins {
+    const GluingResult* glued = nullptr;
+    const std::vector<BlockLattice>* blocks = nullptr;
+    std::vector<Index> block;               ///< per particle: its block (index into *blocks)
+    std::vector<Int3> blockCell;            ///< per particle: its cell in its block's frame
+    std::vector<std::size_t> element;       ///< per particle: gmsh element tag of its hex
+    std::vector<std::vector<int>> volumes;  ///< per space: gmsh volume tags of its blocks
+};
+
+/// "space 1 of body 'rod' (gmsh volumes 2,3,4,5)".
+std::string spaceLabel(std::size_t s, const ParticleFile& particles,
+                       const std::vector<std::vector<int>>& spaceVolumes);
 
 /// Which particles to keep (1) and what was cut, per pair (space, a space that outranks it)
 /// of one body. Throws MeshError naming `source` and the spaces' gmsh volumes
@@ -82,9 +117,11 @@ std::vector<char> cutHoles(const std::string& source, const ParticleFile& partic
                            std::vector<HoleCutReport>& reports);
 
 /// Fills particles.overset and particles.transient (DESIGN §6) for the kept particles. Throws
-/// MeshError naming `source` when a particle within reach of a space can get no valid θ there
-/// (the extended map folds, det ∂X/∂θ ≤ 0, or its inverse does not converge).
+/// MeshError naming `source`, the particle's X and hex and both spaces when a particle within
+/// reach of a space can get no valid θ there (the extended map folds, det ∂X/∂θ ≤ 0, or its
+/// inverse does not converge, and the spaces share no block face to continue across).
 void findTransients(const std::string& source, ParticleFile& particles, const SpaceMaps& maps,
-                    double kappa, std::vector<TransientReport>& reports);
+                    const ParticleOrigins& origins, double kappa, TransientRule rule,
+                    std::vector<TransientReport>& reports);
 
 }  // namespace gsph::preproc

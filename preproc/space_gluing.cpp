@@ -11,11 +11,7 @@ namespace gsph::preproc {
 
 namespace {
 
-/// A face shared by blocks a and b; bToA maps b's node coordinates to a's.
-struct Glue {
-    Index a = 0, b = 0;
-    LatticeTransform bToA;
-};
+using Glue = SharedFace;
 
 /// The shared faces, in search order, and the triples of faces around an edge where exactly
 /// three blocks meet: at most one face of such a triple can lie inside a space (three blocks
@@ -389,7 +385,13 @@ GluingResult glueBlocks(const std::vector<BlockLattice>& blocks,
     GluingResult result;
     const Partition p = Search(blocks, set).run(result.exhaustive);
     result.sharedFaces = static_cast<int>(glues.size());
-    for (const Glue& g : glues) result.honouredFaces += p.rep[g.a] == p.rep[g.b] ? 1 : 0;
+    for (const Glue& g : glues) {
+        if (p.rep[g.a] == p.rep[g.b]) {
+            ++result.honouredFaces;
+        } else {
+            result.interfaces.push_back(g);
+        }
+    }
 
     for (std::size_t seed = 0; seed < blocks.size(); ++seed) {
         // Visit each space once, from its smallest block (the seed): its frame is the space's.

@@ -40,8 +40,18 @@ struct GluedSpace {
     Int3 cellOf(std::size_t entry, const Int3& blockCell) const;
 };
 
+/// A whole side of block b that is a whole side of block a, node for node; bToA maps b's node
+/// coordinates to a's, b lying outside a.
+struct SharedFace {
+    Index a = 0, b = 0;
+    LatticeTransform bToA;
+};
+
 struct GluingResult {
     std::vector<GluedSpace> spaces;
+    /// The shared faces between blocks of two different spaces (the interfaces across which
+    /// an overset body's lattices continue, overset.hpp).
+    std::vector<SharedFace> interfaces;
     int sharedFaces = 0;     ///< faces shared by two blocks of one body
     int honouredFaces = 0;   ///< of which inside one space
     bool exhaustive = true;  ///< false if the search stopped at kMaxSearchSteps

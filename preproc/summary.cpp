@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <vector>
 
+#include "core/version.hpp"
+
 namespace gsph::preproc {
 
 namespace {
@@ -25,22 +27,17 @@ std::string join(const std::vector<int>& values) {
 
 }  // namespace
 
-void printSummary(std::ostream& out, const std::string& output, const ParticleFile& pf,
-                  const ConversionStats& stats, const Timings& t) {
+void printSpaces(std::ostream& out, const std::string& input, const std::string& parameters,
+                 const std::string& output, const ParticleFile& pf, const ConversionStats& stats) {
     const auto spaces = pf.spaces.size();
-    std::vector<long> perSpace(spaces, 0), perBody(pf.bodies.size(), 0);
-    std::vector<double> bodyVolume(pf.bodies.size(), 0.0);
+    std::vector<long> perSpace(spaces, 0);
+    std::vector<Index> bodyOfSpace(spaces, 0);
     for (Index a = 0; a < pf.size(); ++a) {
         ++perSpace[pf.space[a]];
-        ++perBody[pf.body[a]];
-        bodyVolume[pf.body[a]] += pf.volume[a];
+        bodyOfSpace[pf.space[a]] = pf.body[a];
     }
-    std::vector<Index> bodyOfSpace(spaces, 0);
-    for (Index a = 0; a < pf.size(); ++a) bodyOfSpace[pf.space[a]] = pf.body[a];
-
-    out << "gsph-preproc " << pf.provenance.toolVersion << ": " << pf.provenance.sourceFile
-        << (pf.provenance.parameters.empty() ? "" : " (" + pf.provenance.parameters + ")") << " -> "
-        << output << "\n";
+    out << "gsph-preproc " << kVersion << ": " << input
+        << (parameters.empty() ? "" : " (" + parameters + ")") << " -> " << output << "\n";
     out << format("  particles  %ld in %zu space%s, %zu bod%s, from %zu hexahedra\n",
                   static_cast<long>(pf.size()), spaces, spaces == 1 ? "" : "s", pf.bodies.size(),
                   pf.bodies.size() == 1 ? "y" : "ies", stats.hexes);
@@ -55,6 +52,17 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
             "  space %-3zu body %-3d cells %-16s periodic %-4s particles %-9ld gmsh volumes %s\n",
             s, bodyOfSpace[s], cells.c_str(), periodic.empty() ? "-" : periodic.c_str(),
             perSpace[s], join(stats.spaceVolumes[s]).c_str());
+    }
+    out.flush();
+}
+
+void printSummary(std::ostream& out, const ParticleFile& pf, const ConversionStats& stats,
+                  const Timings& t) {
+    std::vector<long> perBody(pf.bodies.size(), 0);
+    std::vector<double> bodyVolume(pf.bodies.size(), 0.0);
+    for (Index a = 0; a < pf.size(); ++a) {
+        ++perBody[pf.body[a]];
+        bodyVolume[pf.body[a]] += pf.volume[a];
     }
     for (std::size_t b = 0; b < pf.bodies.size(); ++b) {
         const BodyInfo& body = pf.bodies[b];
@@ -101,6 +109,12 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
             "space's particles is transient there\n",
             stats.oversetKappa, 2.0 * stats.oversetKappa);
     }
+    long cut = 0;
+    for (const HoleCutReport& c : stats.cuts) cut += c.particles;
+    if (cut > 0) {
+        out << format("  kept       %ld particles after hole cutting (%ld cut)\n",
+                      static_cast<long>(pf.size()), cut);
+    }
     for (const HoleCutReport& c : stats.cuts) {
         if (c.particles == 0 && c.doubleCounted == 0.0) {
             out << format("  cut        space %d by space %d: none (they do not overlap)\n",
@@ -113,6 +127,13 @@ void printSummary(std::ostream& out, const std::string& output, const ParticleFi
             c.space, c.by, c.particles, c.volume, c.gap, c.doubleCounted);
     }
     for (const TransientReport& tr : stats.transients) {
+        if (tr.continued) {
+            out << format(
+                "  transient  space %d in space %d: %ld particles, space %d's lattice continued "
+                "across the block faces they share, up to %.3f dtheta past it\n",
+                tr.space, tr.in, tr.particles, tr.in, tr.maxExtrapolation);
+            continue;
+        }
         out << format(
             "  transient  space %d in space %d: %ld particles, extrapolated up to %.3f dtheta past "
             "space %d's lattice%s\n",

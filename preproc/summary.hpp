@@ -19,7 +19,15 @@ struct Timings {
     double total = 0.0;    ///< wall time of the whole run [s]
 };
 
-void printSummary(std::ostream& out, const std::string& output, const ParticleFile& particles,
-                  const ConversionStats& stats, const Timings& timings);
+/// The first part, printed as soon as the blocks are glued (before hole cutting and transients,
+/// whose errors name the spaces): the header, the particles per space with their gmsh volumes
+/// and body.
+void printSpaces(std::ostream& out, const std::string& input, const std::string& parameters,
+                 const std::string& output, const ParticleFile& particles,
+                 const ConversionStats& stats);
+
+/// The rest, once the file is written: bodies, spacing, sets, metric, overset, gluing, timings.
+void printSummary(std::ostream& out, const ParticleFile& particles, const ConversionStats& stats,
+                  const Timings& timings);
 
 }  // namespace gsph::preproc
