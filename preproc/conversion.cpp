@@ -99,7 +99,8 @@ void checkElementOrientation(const HexMesh& mesh) {
             if (!(minCornerJacobian(x) > 0.0)) {
                 checkCollapsedEdges(mesh, v, h, x);  // a collapsed edge has its own message
                 throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                                " in volume " + std::to_string(v.tag) +
+                                " in volume " + std::to_string(v.tag) + " at " +
+                                point(hexCentre(x)) +
                                 " is inverted or degenerate (its Jacobian is not positive at "
                                 "every corner)");
             }
@@ -178,7 +179,8 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                 const double cornerJacobian = minCornerJacobian(x);
                 if (!(cornerJacobian > 0.0)) {
                     throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                                    " in volume " + std::to_string(block.volumeTag) +
+                                    " in volume " + std::to_string(block.volumeTag) + " at " +
+                                    point(hexCentre(x)) +
                                     " is inverted (the structured grid folds there)");
                 }
                 const Int3 c = space.cellOf(entry, {i, j, k});

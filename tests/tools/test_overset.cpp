@@ -288,6 +288,10 @@ TEST(Overset, TransientInAFoldedExtensionIsAnError) {
         return Vec3(1.0 + i, y, k[2]);
     });
     expectError<MeshError>(builder.build(), {}, "folds");
+    // The error names the particle's hex and both spaces by their gmsh volumes.
+    expectError<MeshError>(builder.build(), {}, "(gmsh element ");
+    expectError<MeshError>(builder.build(), {}, "of space 0 of body 0 (gmsh volume 1)");
+    expectError<MeshError>(builder.build(), {}, "support of space 1 of body 0 (gmsh volume 2)");
 
     // On the fold line itself (x = ½) ∂X/∂θ of B's extension is singular and Newton stalls.
     MeshBuilder onFold(9);

@@ -113,6 +113,21 @@ TEST(CubedSphere, ContinuedLatticeIsTheMeshAcrossEachSharedFace) {
     EXPECT_GT(faceNeighbours, 0);
 }
 
+// The extended map alone cannot reach across the column's concave bends: the error names the
+// particle's hex and both spaces by gmsh volumes and body.
+TEST(CubedSphere, ExtendedMapAloneFoldsAndSaysWhere) {
+    try {
+        convertSphere({}, preproc::TransientRule::Map);
+        FAIL() << "--transients map converted the cubed sphere";
+    } catch (const MeshError& e) {
+        const std::string what = e.what();
+        for (const char* part : {"sphere.geo: particle ", "(gmsh element ",
+                                 "of body 'ball' (gmsh volumes ", "cannot be located there"}) {
+            EXPECT_NE(what.find(part), std::string::npos) << part << "\n" << what;
+        }
+    }
+}
+
 TEST(CubedSphere, StaysAtRestAndAffineMotionGivesExactF) {
     for (const preproc::TransientRule rule :
          {preproc::TransientRule::Automatic, preproc::TransientRule::Lattice}) {
