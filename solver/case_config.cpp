@@ -31,8 +31,8 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     if (!run) throw InputError(file + ":1: missing table [run]");
     const TomlKeys r(file, *run, "[run]",
                      {"particles", "end_time", "output_interval", "history_interval", "cfl",
-                      "kappa", "viscosity", "viscosity_switch", "hourglass", "checkpoint_interval",
-                      "min_dt_ratio", "gravity"});
+                      "kappa", "mass", "viscosity", "viscosity_switch", "hourglass",
+                      "checkpoint_interval", "min_dt_ratio", "gravity"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -44,6 +44,10 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.cfl = r.number("cfl", c.cfl, Sign::Positive);
     if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
     c.kappa = r.number("kappa", c.kappa, Sign::Positive);
+    const std::string mass = r.text("mass", "quadrature");
+    if (mass != "quadrature" && mass != "mesh")
+        r.fail("mass", "'mass' in [run] must be \"quadrature\" or \"mesh\", got '" + mass + "'");
+    c.massBasis = mass == "mesh" ? MassBasis::MeshVolume : MassBasis::QuadratureVolume;
     if (r.has("viscosity")) {
         const std::vector<double> beta = r.numbers("viscosity", 2);
         if (beta[0] < 0.0 || beta[1] < 0.0) r.fail("viscosity", "'viscosity' in [run] must be ≥ 0");

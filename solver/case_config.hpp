@@ -11,7 +11,8 @@
 
 #include "core/types.hpp"
 #include "forces/artificial_viscosity.hpp"
-#include "material_config.hpp"  // MaterialSpec: [[material]] tables and material files
+#include "material_config.hpp"      // MaterialSpec: [[material]] tables and material files
+#include "particles/reference.hpp"  // MassBasis
 
 namespace gsph::solver {
 
@@ -87,6 +88,8 @@ struct CaseConfig {
     double historyInterval = 0.0;
     double cfl = 0.3;
     double kappa = 1.2;
+    /// [run] mass: "quadrature" (ρ0 ω det M, default) or "mesh" (ρ0 × the cell's meshed volume).
+    MassBasis massBasis = MassBasis::QuadratureVolume;
     ViscosityCoefficients viscosity = kDefaultViscosity;
     double hourglass = 0.1;
     /// [s] of simulated time between checkpoints (default: output_interval; 0 = only on a

@@ -350,8 +350,10 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
         solverOptions.precracks.push_back({p.corner, p.edge1, p.edge2});
     solverOptions.failedBonds = bodies.failedBonds;
     solverOptions.contact = {c.contact.betweenBodies, c.contact.penalty, c.contact.distance};
-    auto sim = std::make_unique<Simulation>(buildReference(file, bodies.density, c.kappa),
-                                            std::move(bodies.materials), solverOptions);
+    Reference ref = buildReference(file, bodies.density, c.kappa);
+    ref.massBasis = c.massBasis;
+    auto sim =
+        std::make_unique<Simulation>(std::move(ref), std::move(bodies.materials), solverOptions);
     for (VelocityConstraint& vc : sets.constraints) sim->constrain(std::move(vc));
     for (SetForce& f : sets.forces) sim->applyForce(std::move(f));
     for (PressureLoad& p : sets.pressures)

@@ -62,6 +62,9 @@ void computeGeometry(Reference& ref) {
     ref.quadVolume.resize(N);
     ref.mass.resize(N);
     if (ref.density.size() != N) throw InputError("reference has no density per particle");
+    const bool meshMass = ref.massBasis == MassBasis::MeshVolume;
+    if (meshMass && ref.volume.size() != N)
+        throw InputError("reference has no meshed volume per particle for its mass");
     ref.spacing.resize(N);
     ref.smoothingLength.resize(N);
     ref.metricCondition.resize(N);
@@ -78,7 +81,7 @@ void computeGeometry(Reference& ref) {
         const double detM = M.determinant();
         ref.G[ia] = pm.G;
         ref.quadVolume[ia] = ref.omega[ia] * detM;
-        ref.mass[ia] = ref.density[ia] * ref.quadVolume[ia];
+        ref.mass[ia] = ref.density[ia] * (meshMass ? ref.volume[ia] : ref.quadVolume[ia]);
         const int d = ref.dim.value;
         const Vec3 s = d == 3 ? Vec3(Eigen::JacobiSVD<Mat3>(M).singularValues())
                               : Vec3(Eigen::JacobiSVD<Eigen::Matrix2d>(M.topLeftCorner<2, 2>())

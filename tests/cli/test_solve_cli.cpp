@@ -70,6 +70,7 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"fixed_bad_axis.toml",
          "'fixed' in [[set]] must be a list of distinct axes \"x\", \"y\", \"z\"", 17},
         {"negative_viscosity_switch.toml", "'viscosity_switch' in [run] must be ≥ 0", 4},
+        {"unknown_mass_basis.toml", "'mass' in [run] must be \"quadrature\" or \"mesh\"", 4},
         {"unknown_table.toml", "unknown table 'walls'", 15},
         {"density_not_a_number.toml", "'density' in [[material]] must be a number", 7},
         {"no_body.toml", "no [[body]] defined", 0},

@@ -51,6 +51,28 @@ TEST(Metric, GradedMapQuadratureVolumeIsSecondOrderInside) {
     EXPECT_NEAR(total / exact, 1.0, 0.005);
 }
 
+TEST(Metric, MeshVolumeMassIsTheMeshedVolumeAndLeavesTheGeometryAlone) {
+    // The same graded lattice with MassBasis::MeshVolume: each mass is ρ0 × its cell's exact
+    // volume (the body's mass to round-off), and nothing else derived changes.
+    const AnalyticMap map =
+        gradedBoxMap(Vec3(1, 1, 1),
+                     {AxisGrading{AxisGrading::Kind::OneSided, 4.0}, AxisGrading{}, AxisGrading{}});
+    const Reference quadrature = built(map, 2, {16, 16, 1});
+    Reference mesh = latticeReference(map, 2, {16, 16, 1}, 1000.0, 1.2);
+    mesh.massBasis = MassBasis::MeshVolume;
+    buildPairs(mesh);
+    computeGeometry(mesh);
+    double total = 0.0, exact = 0.0;
+    for (std::size_t a = 0; a < mesh.mass.size(); ++a) {
+        EXPECT_EQ(mesh.mass[a], 1000.0 * mesh.volume[a]);
+        EXPECT_EQ(mesh.quadVolume[a], quadrature.quadVolume[a]);
+        EXPECT_EQ(mesh.G[a], quadrature.G[a]);
+        total += mesh.mass[a];
+        exact += 1000.0 * mesh.volume[a];
+    }
+    EXPECT_NEAR(total / exact, 1.0, 1e-14);
+}
+
 TEST(Metric, TooFewNeighboursIsAClearError) {
     // A single row of particles in 3-D has no neighbour across it: B is singular.
     Reference ref = latticeReference(gradedBoxMap(Vec3(1, 1, 1), {}), 3, {6, 1, 6}, 1000.0, 1.2);
