@@ -13,7 +13,6 @@
 
 #include "converted_layout.hpp"
 #include "gmsh_input.hpp"
-#include "kinematics/deformation_gradient.hpp"
 #include "overset_checks.hpp"
 #include "simulation.hpp"
 
@@ -27,43 +26,17 @@ ElasticConstants steel() {
     return ElasticConstants(kSteelDensity, 200e9, 0.3);
 }
 
-preproc::Conversion convertSphere(const std::vector<std::pair<std::string, double>>& parameters,
+preproc::Conversion convertSphere(const test::Parameters& parameters,
                                   preproc::TransientRule rule = preproc::TransientRule::Automatic,
                                   preproc::HexMesh* meshOut = nullptr) {
-    const std::string path = std::string(GSPH_SOURCE_DIR) + "/geometries/sphere.geo";
-    std::vector<std::string> warnings;
-    preproc::HexMesh mesh =
-        preproc::readHexMesh(path, preproc::MeshReadOptions{parameters}, warnings);
-    preproc::ConversionOptions options;
-    options.transients = rule;
-    preproc::Conversion c = preproc::convertHexMesh(mesh, options);
-    warnings.insert(warnings.end(), c.warnings.begin(), c.warnings.end());
-    for (const std::string& w : warnings) ADD_FAILURE() << path << ": warning: " << w;
-    validateParticleFile(c.particles);
-    if (meshOut != nullptr) *meshOut = std::move(mesh);
-    return c;
-}
-
-double volumeOf(const ParticleFile& f) {
-    double v = 0.0;
-    for (double V : f.volume) v += V;
-    return v;
+    return test::convertSample("sphere.geo", parameters, rule, meshOut);
 }
 
 TEST(CubedSphere, VolumeConvergesAtSecondOrder) {
     const double exact = 4.0 / 3.0 * std::numbers::pi * std::pow(kRadius, 3);
-    double error[3];
-    for (int r = 1; r <= 3; ++r) {
-        const preproc::Conversion c = convertSphere({{"refine", r}});
-        error[r - 1] = std::abs(volumeOf(c.particles) - exact) / exact;
-        std::printf("[sphere] refine %d: %d particles in %zu spaces, volume error %.3e\n", r,
-                    c.particles.size(), c.particles.spaces.size(), error[r - 1]);
-    }
-    const double order12 = std::log(error[0] / error[1]) / std::log(2.0);
-    const double order23 = std::log(error[1] / error[2]) / std::log(1.5);
-    std::printf("[sphere] observed order %.3f (refine 1→2), %.3f (2→3)\n", order12, order23);
-    EXPECT_NEAR(order12, 2.0, 0.05);
-    EXPECT_NEAR(order23, 2.0, 0.05);
+    const test::VolumeConvergence v = test::volumeConvergence("sphere", "sphere.geo", {}, exact);
+    EXPECT_NEAR(v.order12, 2.0, 0.05);
+    EXPECT_NEAR(v.order23, 2.0, 0.05);
 }
 
 // Each continued entry sits on a cell centre of the space it is transient in, on no other
@@ -135,34 +108,16 @@ TEST(CubedSphere, StaysAtRestAndAffineMotionGivesExactF) {
         Reference ref = buildReference(c.particles, std::vector<double>{kSteelDensity}, 1.2);
         buildPairs(ref);
         computeGeometry(ref);
-        const Mat3 A =
-            (Mat3() << 1.10, 0.07, -0.03, -0.05, 0.92, 0.04, 0.02, -0.06, 1.05).finished();
-        std::vector<Vec3> x(ref.X.size());
-        for (std::size_t a = 0; a < x.size(); ++a) x[a] = A * ref.X[a] + Vec3(3e-3, -2e-3, 1e-3);
-        std::vector<Mat3> F;
-        deformationGradient(ref, x, F);
-        double affine = 0.0;
-        for (const Mat3& Fa : F) affine = std::max(affine, (Fa - A).cwiseAbs().maxCoeff());
-        deformationGradient(ref, ref.X, F);
-        double rest = 0.0;
-        for (const Mat3& Fa : F) rest = std::max(rest, (Fa - Mat3::Identity()).norm());
-        SolverOptions options;  // the cases' defaults, with viscosity and hourglass control on
-        options.viscosity = {1.0, 1.0};
-        options.hourglass = 0.1;
-        Simulation sim(std::move(ref), {HypoElastic(steel())}, options);
-        double speed = 0.0;
-        for (int s = 0; s < 300; ++s) {
-            sim.step();
-            for (const Vec3& v : sim.state().v) speed = std::max(speed, v.norm());
-        }
+        const test::RestAndAffine r =
+            test::restAndAffine(std::move(ref), steel(), 300, Vec3(3e-3, -2e-3, 1e-3));
         std::printf(
             "[sphere] transients %s: %d particles, %zu transient entries; affine F error %.1e, "
             "at rest |F − I| %.1e, |v| over 300 steps %.1e m/s\n",
-            rule == preproc::TransientRule::Lattice ? "lattice" : "auto", sim.reference().size(),
-            sim.reference().overset.size(), affine, rest, speed);
-        EXPECT_LE(affine, 1e-10);
-        EXPECT_LE(rest, 1e-12);
-        EXPECT_LE(speed, 1e-12);
+            rule == preproc::TransientRule::Lattice ? "lattice" : "auto", r.particles, r.entries,
+            r.affine, r.rest, r.speed);
+        EXPECT_LE(r.affine, 1e-10);
+        EXPECT_LE(r.rest, 1e-12);
+        EXPECT_LE(r.speed, 1e-12);
     }
 }
 
