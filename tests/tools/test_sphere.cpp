@@ -39,6 +39,33 @@ TEST(CubedSphere, VolumeConvergesAtSecondOrder) {
     EXPECT_NEAR(v.order23, 2.0, 0.05);
 }
 
+// With the default rule, the pairs whose transients come from the extended map (the ring's
+// particles in the column's space) map back to their X through it to 1e-12 of the radius, with
+// ω = V / det ∂X/∂θ there.
+TEST(CubedSphere, MappedTransientsMapBackToTheirX) {
+    preproc::HexMesh mesh;
+    const preproc::Conversion c = convertSphere({}, preproc::TransientRule::Automatic, &mesh);
+    const ParticleFile& f = c.particles;
+    const auto maps = test::spaceMapsOf(mesh);
+    std::set<std::pair<Index, Index>> mapped;  // (home space, space)
+    for (const preproc::TransientReport& r : c.stats.transients)
+        if (!r.continued && r.particles > 0) mapped.insert({r.space, r.in});
+    ASSERT_FALSE(mapped.empty());
+    double worst = 0.0;
+    long checked = 0;
+    for (std::size_t e = 0; e < f.overset.size(); ++e) {
+        const Index b = f.overset.particle[e], s = f.overset.space[e];
+        if (mapped.count({f.space[b], s}) == 0) continue;
+        const Vec3 u = f.overset.theta[e] / f.spaces[s].dtheta;
+        worst = std::max(worst, (maps[s]->position(u) - f.X[b]).norm() / kRadius);
+        const double det = maps[s]->jacobian(u).determinant();
+        EXPECT_NEAR(f.overset.omega[e], f.volume[b] / det, 1e-12 * f.overset.omega[e]);
+        ++checked;
+    }
+    std::printf("[sphere] %ld mapped entries: |X(θ) − X| ≤ %.1e of the radius\n", checked, worst);
+    EXPECT_LE(worst, 1e-12);
+}
+
 // Each continued entry sits on a cell centre of the space it is transient in, on no other
 // particle's θ; one just across a shared face (half a cell past the lattice) has a particle of
 // that space one cell away in θ whose hexahedron shares that face with its own (4 nodes).
