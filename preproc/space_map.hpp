@@ -10,7 +10,8 @@
 //
 // Inverse (locate): candidate cells from a bucket grid over the cells' bounding boxes (boxes of
 // boundary cells cover their extension, exactly: a trilinear map takes its extreme values at
-// the corners of a box in u), then Newton iterations on each candidate's polynomial. A solution
+// the corners of a box in u), then Newton iterations on each candidate's polynomial from the
+// cell's centre, retried with a backtracking line search on |X(u) − X| where they fail. A solution
 // counts for a cell when u lies in the cell's own range, which for a boundary cell reaches
 // `extension` cells past its boundary sides. Among several solutions the one nearest the lattice
 // box wins, then the lowest cell (ties happen only where extensions of non-adjacent boundary
