@@ -91,8 +91,6 @@ void Simulation::start() {
 
 void Simulation::resume(State state, const std::string& source) {
     if (integrator_) throw Error("resume() must come before the first step");
-    // Checkpoints of format 1.0 have no wall forces: the first history row reads zero.
-    if (state.wallForce.empty()) state.wallForce.assign(walls_.size(), Vec3::Zero());
     State expected = State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs()));
     expected.wallForce.assign(walls_.size(), Vec3::Zero());
     checkStateShape(state, expected, source);

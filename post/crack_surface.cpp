@@ -59,17 +59,19 @@ Vec3 vectorArea(const std::vector<Vec3>& p) {
 }
 
 // Ghost points outside the boundary (header comment): mirrors of the near neighbours.
+// `handle[i]`: the vertex of particle members[i].
 void ghostPoints(const Delaunay& dt, const std::vector<Delaunay::Vertex_handle>& handle,
-                 const std::vector<Vec3>& X, std::vector<Index>& source,
-                 std::vector<Vec3>& position) {
+                 const std::vector<Vec3>& X, const std::vector<Index>& members,
+                 std::vector<Index>& source, std::vector<Vec3>& position) {
     std::vector<Delaunay::Vertex_handle> adjacent;
     std::vector<Vec3> mine;
-    for (std::size_t a = 0; a < X.size(); ++a) {
-        if (handle[a] == Delaunay::Vertex_handle() ||
-            static_cast<std::size_t>(handle[a]->info()) != a)
+    for (std::size_t i = 0; i < members.size(); ++i) {
+        const auto a = static_cast<std::size_t>(members[i]);
+        if (handle[i] == Delaunay::Vertex_handle() ||
+            static_cast<std::size_t>(handle[i]->info()) != a)
             continue;  // a duplicate point: its twin stands for it
         adjacent.clear();
-        dt.finite_adjacent_vertices(handle[a], std::back_inserter(adjacent));
+        dt.finite_adjacent_vertices(handle[i], std::back_inserter(adjacent));
         double nearest = std::numeric_limits<double>::infinity();
         for (const auto& v : adjacent)
             nearest = std::min(nearest, (toVec(v->point()) - X[a]).norm());
@@ -95,11 +97,19 @@ void ghostPoints(const Delaunay& dt, const std::vector<Delaunay::Vertex_handle>&
 // give the local crack plane.
 constexpr double kPatchRadius = 3.0;
 
-// Per polygon, its reference area projected on the local crack plane (header comment).
-std::vector<double> projectedAreas(const std::vector<Vec3>& ref, const CrackSurface& c) {
+// Per polygon, its reference area projected on the local crack plane (header comment); a
+// patch holds the facets of the polygon's own body (`body`: per polygon) only.
+std::vector<double> projectedAreas(const std::vector<Vec3>& ref, const CrackSurface& c,
+                                   const std::vector<Index>& body) {
     const std::size_t m = c.polygons();
+    std::vector<Index> bodies = body;
+    std::sort(bodies.begin(), bodies.end());
+    bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+    std::vector<std::int64_t> group(m);  // position of the polygon's body in `bodies`
+    for (std::size_t p = 0; p < m; ++p)
+        group[p] = std::lower_bound(bodies.begin(), bodies.end(), body[p]) - bodies.begin();
     std::vector<Vec3> centroid(m), normal(m);
-    double size = 0.0;
+    std::vector<double> size(bodies.size(), 0.0);  // per body, its largest facet's √area
     for (std::size_t p = 0; p < m; ++p) {
         std::vector<Vec3> corners;
         for (Index k = c.offsets[p]; k < c.offsets[p + 1]; ++k)
@@ -109,30 +119,35 @@ std::vector<double> projectedAreas(const std::vector<Vec3>& ref, const CrackSurf
         for (const Vec3& q : corners) sum += q;
         centroid[p] = sum / static_cast<double>(corners.size());
         normal[p] = vectorArea(corners).normalized();
-        size = std::max(size, std::sqrt(c.referenceArea[p]));
+        double& largest = size[static_cast<std::size_t>(group[p])];
+        largest = std::max(largest, std::sqrt(c.referenceArea[p]));
     }
-    // Uniform grid of cell R over the centroids: the patch of p is in the 27 cells around it.
-    const double R = kPatchRadius * size;
-    using Key = std::array<std::int64_t, 3>;
-    auto keyOf = [&](const Vec3& x) {
-        return Key{static_cast<std::int64_t>(std::floor(x[0] / R)),
+    // Per body, a uniform grid of cell R over the centroids: the patch of p is in the 27 cells
+    // around it. Keys: (body, cell).
+    using Key = std::array<std::int64_t, 4>;
+    auto keyOf = [&](std::size_t p) {
+        const std::int64_t g = group[p];
+        const double R = kPatchRadius * size[static_cast<std::size_t>(g)];
+        const Vec3& x = centroid[p];
+        return Key{g, static_cast<std::int64_t>(std::floor(x[0] / R)),
                    static_cast<std::int64_t>(std::floor(x[1] / R)),
                    static_cast<std::int64_t>(std::floor(x[2] / R))};
     };
     std::vector<std::pair<Key, std::size_t>> grid(m);
-    for (std::size_t p = 0; p < m; ++p) grid[p] = {keyOf(centroid[p]), p};
+    for (std::size_t p = 0; p < m; ++p) grid[p] = {keyOf(p), p};
     std::sort(grid.begin(), grid.end());
     std::vector<double> out(m);
     parallelFor(static_cast<std::ptrdiff_t>(m), [&](std::ptrdiff_t pi) {
         const auto p = static_cast<std::size_t>(pi);
-        const Key home = keyOf(centroid[p]);
+        const Key home = keyOf(p);
+        const double R = kPatchRadius * size[static_cast<std::size_t>(group[p])];
         double weight = 0.0;
         Vec3 first = Vec3::Zero();
         Mat3 second = Mat3::Zero();
         for (std::int64_t dx = -1; dx <= 1; ++dx)
             for (std::int64_t dy = -1; dy <= 1; ++dy)
                 for (std::int64_t dz = -1; dz <= 1; ++dz) {
-                    const Key k = {home[0] + dx, home[1] + dy, home[2] + dz};
+                    const Key k = {home[0], home[1] + dx, home[2] + dy, home[3] + dz};
                     auto it = std::lower_bound(grid.begin(), grid.end(),
                                                std::make_pair(k, std::size_t{0}));
                     for (; it != grid.end() && it->first == k; ++it) {
@@ -167,25 +182,74 @@ double CrackSurface::totalReferenceArea() const {
     return std::accumulate(referenceArea.begin(), referenceArea.end(), 0.0);
 }
 
-CrackSurfaces::CrackSurfaces(const std::vector<Vec3>& X) : particles_(X.size()) {
-    const Index n = static_cast<Index>(X.size());
-    std::vector<std::pair<Point, Index>> points(X.size());
-    for (Index a = 0; a < n; ++a) {
-        const Vec3& p = X[static_cast<std::size_t>(a)];
-        points[static_cast<std::size_t>(a)] = {Point(p[0], p[1], p[2]), a};
+// A Delaunay edge between two particles and its Voronoi facet.
+struct CrackSurfaces::Facet {
+    Index a, b;  ///< a < b
+    double area;
+    std::vector<Index> polygon;  ///< Voronoi vertices, in order
+};
+
+CrackSurfaces::CrackSurfaces(const std::vector<Vec3>& X, const std::vector<Index>& body)
+    : particles_(X.size()), body_(body) {
+    if (!body.empty() && body.size() != X.size())
+        throw InputError("crack surfaces: " + std::to_string(body.size()) + " body ids for " +
+                         std::to_string(X.size()) + " particles");
+    // The particles of each body, in index order (one body if no ids are given).
+    std::vector<std::pair<Index, Index>> byBody(X.size());
+    for (std::size_t a = 0; a < X.size(); ++a)
+        byBody[a] = {body.empty() ? 0 : body[a], static_cast<Index>(a)};
+    std::sort(byBody.begin(), byBody.end());
+    std::vector<Facet> found;
+    std::vector<Index> members;
+    std::size_t spanning = 0;
+    for (std::size_t k = 0; k < byBody.size();) {
+        members.clear();
+        const Index id = byBody[k].first;
+        for (; k < byBody.size() && byBody[k].first == id; ++k) members.push_back(byBody[k].second);
+        if (triangulate(X, members, found))
+            ++spanning;
+        else
+            ++flatBodies_;
+    }
+    if (spanning == 0) throw InputError("crack surfaces need particles that span three dimensions");
+    std::sort(found.begin(), found.end(), [](const Facet& p, const Facet& q) {
+        return std::tie(p.a, p.b) < std::tie(q.a, q.b);
+    });
+    rowBegin_.assign(X.size() + 1, 0);
+    polygonBegin_.push_back(0);
+    for (const Facet& f : found) {
+        ++rowBegin_[static_cast<std::size_t>(f.a) + 1];
+        facetPartner_.push_back(f.b);
+        facetArea_.push_back(f.area);
+        polygon_.insert(polygon_.end(), f.polygon.begin(), f.polygon.end());
+        polygonBegin_.push_back(static_cast<Index>(polygon_.size()));
+    }
+    std::partial_sum(rowBegin_.begin(), rowBegin_.end(), rowBegin_.begin());
+}
+
+bool CrackSurfaces::triangulate(const std::vector<Vec3>& X, const std::vector<Index>& members,
+                                std::vector<Facet>& found) {
+    const auto n = static_cast<Index>(X.size());
+    std::vector<std::pair<Point, Index>> points(members.size());
+    for (std::size_t i = 0; i < members.size(); ++i) {
+        const Vec3& p = X[static_cast<std::size_t>(members[i])];
+        points[i] = {Point(p[0], p[1], p[2]), members[i]};
     }
     Delaunay dt(points.begin(), points.end());
-    if (dt.dimension() < 3)
-        throw InputError("crack surfaces need particles that span three dimensions");
-    std::vector<Delaunay::Vertex_handle> handle(X.size());
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
-        handle[static_cast<std::size_t>(v->info())] = v;
+    if (dt.dimension() < 3) return false;
+    std::vector<Delaunay::Vertex_handle> handle(members.size());
+    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+        const auto i = std::lower_bound(members.begin(), members.end(), v->info());
+        handle[static_cast<std::size_t>(i - members.begin())] = v;
+    }
 
-    ghostPoints(dt, handle, X, ghostSource_, ghostPosition_);
-    std::vector<std::pair<Point, Index>> ghosts(ghostPosition_.size());
+    // Ghosts are numbered after the particles and the other bodies' ghosts.
+    const std::size_t firstGhost = ghostPosition_.size();
+    ghostPoints(dt, handle, X, members, ghostSource_, ghostPosition_);
+    std::vector<std::pair<Point, Index>> ghosts(ghostPosition_.size() - firstGhost);
     for (std::size_t g = 0; g < ghosts.size(); ++g) {
-        const Vec3& p = ghostPosition_[g];
-        ghosts[g] = {Point(p[0], p[1], p[2]), n + static_cast<Index>(g)};
+        const Vec3& p = ghostPosition_[firstGhost + g];
+        ghosts[g] = {Point(p[0], p[1], p[2]), n + static_cast<Index>(firstGhost + g)};
     }
     dt.insert(ghosts.begin(), ghosts.end());
 
@@ -194,11 +258,14 @@ CrackSurfaces::CrackSurfaces(const std::vector<Vec3>& X) : particles_(X.size()) 
         return k < n ? X[static_cast<std::size_t>(k)]
                      : ghostPosition_[static_cast<std::size_t>(k - n)];
     };
+    // The particles' smallest spacing: the ghosts of two faces one spacing apart may nearly
+    // coincide (4e-19 m apart, measured), and a quantum from them would merge every vertex.
     double minSpacing = std::numeric_limits<double>::infinity();
     for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
-        minSpacing = std::min(minSpacing, (toVec(e->first->vertex(e->second)->point()) -
-                                           toVec(e->first->vertex(e->third)->point()))
-                                              .norm());
+        if (e->first->vertex(e->second)->info() < n && e->first->vertex(e->third)->info() < n)
+            minSpacing = std::min(minSpacing, (toVec(e->first->vertex(e->second)->point()) -
+                                               toVec(e->first->vertex(e->third)->point()))
+                                                  .norm());
 
     // Voronoi vertices: circumcentres of the finite cells, merged when they coincide (the
     // cells of one cospherical lattice cube share one), ordered by their rounded position.
@@ -231,13 +298,7 @@ CrackSurfaces::CrackSurfaces(const std::vector<Vec3>& X) : particles_(X.size()) 
         cells[c]->info() = static_cast<Index>(voronoiPosition_.size() - 1);
     }
 
-    // Facets of the edges between two particles, gathered per smaller particle.
-    struct Facet {
-        Index a, b;
-        double area;
-        std::vector<Index> polygon;
-    };
-    std::vector<Facet> found;
+    // Facets of the edges between two particles.
     std::vector<Vec3> corners;
     for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
         Index a = e->first->vertex(e->second)->info(), b = e->first->vertex(e->third)->info();
@@ -263,12 +324,22 @@ CrackSurfaces::CrackSurfaces(const std::vector<Vec3>& X) : particles_(X.size()) 
         const Vec3 Xa = vertexPosition(a), Xb = vertexPosition(b);
         const double length = (Xb - Xa).norm();
         const Vec3 middle = 0.5 * (Xa + Xb);
-        corners.clear();
-        bool near = true;
-        for (Index v : f.polygon) {
-            corners.push_back(voronoiPosition_[static_cast<std::size_t>(v)]);
-            near = near && (corners.back() - middle).norm() <= kFarVertex * length;
+        // The circulator starts at a cell chosen by CGAL's memory layout: start from the smallest
+        // Voronoi vertex instead, and turn about a → b (the facet's normal along the bond).
+        std::rotate(f.polygon.begin(), std::min_element(f.polygon.begin(), f.polygon.end()),
+                    f.polygon.end());
+        const auto cornersOf = [&] {
+            corners.clear();
+            for (Index v : f.polygon)
+                corners.push_back(voronoiPosition_[static_cast<std::size_t>(v)]);
+        };
+        cornersOf();
+        if (vectorArea(corners).dot(Xb - Xa) < 0.0) {
+            std::reverse(f.polygon.begin() + 1, f.polygon.end());
+            cornersOf();
         }
+        bool near = true;
+        for (const Vec3& q : corners) near = near && (q - middle).norm() <= kFarVertex * length;
         f.area = vectorArea(corners).norm();
         if (f.area < kDegenerateArea * length * length) continue;
         if (!near) {
@@ -277,19 +348,7 @@ CrackSurfaces::CrackSurfaces(const std::vector<Vec3>& X) : particles_(X.size()) 
         }
         found.push_back(std::move(f));
     }
-    std::sort(found.begin(), found.end(), [](const Facet& p, const Facet& q) {
-        return std::tie(p.a, p.b) < std::tie(q.a, q.b);
-    });
-    rowBegin_.assign(X.size() + 1, 0);
-    polygonBegin_.push_back(0);
-    for (const Facet& f : found) {
-        ++rowBegin_[static_cast<std::size_t>(f.a) + 1];
-        facetPartner_.push_back(f.b);
-        facetArea_.push_back(f.area);
-        polygon_.insert(polygon_.end(), f.polygon.begin(), f.polygon.end());
-        polygonBegin_.push_back(static_cast<Index>(polygon_.size()));
-    }
-    std::partial_sum(rowBegin_.begin(), rowBegin_.end(), rowBegin_.begin());
+    return true;
 }
 
 Index CrackSurfaces::facetOf(Index a, Index b) const {
@@ -355,7 +414,11 @@ CrackSurface CrackSurfaces::surface(const Snapshot& s) const {
     std::vector<Vec3> reference(used.size());
     for (std::size_t i = 0; i < used.size(); ++i)
         reference[i] = voronoiPosition_[static_cast<std::size_t>(used[i])];
-    out.projectedArea = projectedAreas(reference, out);
+    std::vector<Index> polygonBody(out.polygons(), 0);
+    if (!body_.empty())
+        for (std::size_t p = 0; p < out.polygons(); ++p)
+            polygonBody[p] = body_[static_cast<std::size_t>(out.bond[p][0])];
+    out.projectedArea = projectedAreas(reference, out, polygonBody);
     return out;
 }
 

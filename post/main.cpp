@@ -300,7 +300,13 @@ int main(int argc, char** argv) {
                             cracksPossible = false;
                         } else {
                             const double t0 = cpuSeconds();
-                            cracks = std::make_unique<gsph::post::CrackSurfaces>(snap.X);
+                            try {
+                                cracks =
+                                    std::make_unique<gsph::post::CrackSurfaces>(snap.X, snap.body);
+                            } catch (const gsph::InputError& e) {
+                                std::printf("gsph-post: no crack surfaces: %s\n", e.what());
+                                cracksPossible = false;
+                            }
                             crackSetup = cpuSeconds() - t0;
                         }
                     }
@@ -347,8 +353,11 @@ int main(int argc, char** argv) {
                 "%.6g m², projected %.6g m² (%zu broken bonds are no Delaunay edge)",
                 (out / "cracks.pvd").c_str(), crackPolygons, crackArea, crackProjected, unmatched);
             if (cracks)
-                std::printf("; Delaunay of %zu particles + %zu ghosts in %.2f s CPU",
+                std::printf("; Delaunay of %zu particles + %zu ghosts, body by body, in %.2f s CPU",
                             static_cast<std::size_t>(last.size()), cracks->ghosts(), crackSetup);
+            if (cracks && cracks->flatBodies() > 0)
+                std::printf("; %zu flat bodies (not spanning three dimensions) have none",
+                            cracks->flatBodies());
             std::printf("\n");
         }
         std::printf("gsph-post: ParaView files in %.2f s (%.2f s CPU)\n", seconds(start),

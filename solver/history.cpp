@@ -60,10 +60,27 @@ const WallColumn kWallColumns[] = {
      [](const State& s, const Wall& w, const Vec3&) { return w.displacement(s.time)[2]; }},
 };
 
+struct BodyColumn {
+    const char* suffix;  ///< the column is body_<name>_<suffix>
+    const char* format;
+    double (*value)(const BodyEnergy&);
+};
+
+// Per body, after the walls' columns (LS-DYNA's matsum): its share of the run's energies and
+// momentum of the same names, so that the bodies' columns add up to the run's.
+const BodyColumn kBodyColumns[] = {
+    {"kinetic_energy", "%.9e", [](const BodyEnergy& b) { return b.kinetic; }},
+    {"internal_energy", "%.9e", [](const BodyEnergy& b) { return b.elastic; }},
+    {"plastic_work", "%.9e", [](const BodyEnergy& b) { return b.plasticWork; }},
+    {"momentum_x", "%.9e", [](const BodyEnergy& b) { return b.momentum[0]; }},
+    {"momentum_y", "%.9e", [](const BodyEnergy& b) { return b.momentum[1]; }},
+    {"momentum_z", "%.9e", [](const BodyEnergy& b) { return b.momentum[2]; }},
+};
+
 }  // namespace
 
-std::string columnName(const std::string& wallName) {
-    std::string out = wallName;
+std::string columnName(const std::string& name) {
+    std::string out = name;
     for (char& c : out) {
         const bool keep =
             (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
@@ -72,8 +89,20 @@ std::string columnName(const std::string& wallName) {
     return out;
 }
 
-History::History(std::filesystem::path path, std::vector<Wall> walls)
-    : path_(std::move(path)), walls_(std::move(walls)), text_(header()) {}
+History::History(std::filesystem::path path, const std::vector<std::string>& bodies,
+                 std::vector<Wall> walls)
+    : path_(std::move(path)), walls_(std::move(walls)) {
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        bodies_.push_back(columnName(bodies[b]));
+        for (std::size_t other = 0; other < b; ++other)
+            if (bodies_[other] == bodies_[b])
+                throw InputError("bodies '" + bodies[other] + "' and '" + bodies[b] +
+                                 "' would have the same history columns (body_" + bodies_[b] +
+                                 "_…): give their physical groups names that differ in letters "
+                                 "or digits");
+    }
+    text_ = header();
+}
 
 std::vector<std::string> History::columnNames() const {
     std::vector<std::string> names;
@@ -81,6 +110,8 @@ std::vector<std::string> History::columnNames() const {
     for (const Wall& w : walls_)
         for (const WallColumn& c : kWallColumns)
             names.push_back("wall_" + columnName(w.name) + "_" + c.suffix);
+    for (const std::string& body : bodies_)
+        for (const BodyColumn& c : kBodyColumns) names.push_back("body_" + body + "_" + c.suffix);
     return names;
 }
 
@@ -99,6 +130,10 @@ void History::add(const State& state, const EnergyReport& energy,
     if (wallForces.size() != walls_.size())
         throw std::logic_error("History::add: " + std::to_string(wallForces.size()) +
                                " wall forces for " + std::to_string(walls_.size()) + " walls");
+    if (energy.bodies.size() != bodies_.size())
+        throw std::logic_error("History::add: the energy of " +
+                               std::to_string(energy.bodies.size()) + " bodies for " +
+                               std::to_string(bodies_.size()) + " bodies");
     bool first = true;
     const auto cell = [&](const char* format, double value) {
         char text[64];
@@ -111,6 +146,8 @@ void History::add(const State& state, const EnergyReport& energy,
     for (std::size_t w = 0; w < walls_.size(); ++w)
         for (const WallColumn& c : kWallColumns)
             cell(c.format, c.value(state, walls_[w], wallForces[w]));
+    for (const BodyEnergy& body : energy.bodies)
+        for (const BodyColumn& c : kBodyColumns) cell(c.format, c.value(body));
     text_ += '\n';
 }
 

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: MIT
 // history.csv of a run (docs/formats.md): rows at snapshots and history intervals, the columns
-// defined in two lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum)
-// and kWallColumns (repeated for every wall, named wall_<name>_<suffix>) — adding a column is
-// one line there and one line in docs/formats.md. The whole table is rewritten atomically at
-// every flush, and its text goes into checkpoints so that a restarted run writes the same file
-// as an uninterrupted one.
+// defined in three lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum),
+// kWallColumns (repeated for every wall, named wall_<name>_<suffix>) and kBodyColumns (repeated
+// for every body, named body_<name>_<suffix>) — adding a column is one line there and one line
+// in docs/formats.md. The whole table is rewritten atomically at every flush, and its text goes
+// into checkpoints so that a restarted run writes the same file as an uninterrupted one.
 #pragma once
 
 #include <filesystem>
@@ -17,20 +17,24 @@
 
 namespace gsph::solver {
 
-/// A wall's name as it appears in column names: letters, digits and '_' kept, anything else
-/// (spaces, '-', non-ASCII bytes) replaced by '_'.
-std::string columnName(const std::string& wallName);
+/// A wall's or body's name as it appears in column names: letters, digits and '_' kept,
+/// anything else (spaces, '-', non-ASCII bytes) replaced by '_'.
+std::string columnName(const std::string& name);
 
 class History {
   public:
-    /// `walls`: the run's walls, in order (their columns follow the run's).
-    History(std::filesystem::path path, std::vector<Wall> walls);
+    /// `bodies`: per body of the run (Simulation::bodies, in order), the name of its columns
+    /// (its physical group's, or its id), which follow the walls'. `walls`: the run's walls, in
+    /// order, their columns after the run's. Throws InputError if two bodies' names make the
+    /// same columns.
+    History(std::filesystem::path path, const std::vector<std::string>& bodies,
+            std::vector<Wall> walls);
 
     /// The column names, in the file's order.
     std::vector<std::string> columnNames() const;
 
-    /// A row; `wallForces`: per wall, its force on the bodies (RigidWalls::totalForces; empty
-    /// if the run has no walls).
+    /// A row; `energy` has one entry per body (EnergyReport::bodies); `wallForces`: per wall,
+    /// its force on the bodies (RigidWalls::totalForces; empty if the run has no walls).
     void add(const State& state, const EnergyReport& energy, const std::vector<Vec3>& wallForces);
     /// Header and rows so far (what a checkpoint stores).
     const std::string& text() const { return text_; }
@@ -44,6 +48,7 @@ class History {
     std::string header() const;
 
     std::filesystem::path path_;
+    std::vector<std::string> bodies_;  ///< column-safe names, in body order
     std::vector<Wall> walls_;
     std::string text_;
 };

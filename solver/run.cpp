@@ -184,6 +184,18 @@ Wall wallOf(const WallSpec& w) {
     return out;
 }
 
+// Per body of the simulation, the name of its history.csv columns: its physical group's, or
+// its id when the group has no name.
+std::vector<std::string> bodyNamesOf(const ParticleFile& file, const Simulation& sim) {
+    std::vector<std::string> names;
+    for (const BodyRange& range : sim.bodies()) {
+        const Index id = sim.reference().body[static_cast<std::size_t>(range.begin)];
+        const std::string& name = file.bodies[static_cast<std::size_t>(id)].name;
+        names.push_back(name.empty() ? std::to_string(id) : name);
+    }
+    return names;
+}
+
 std::vector<Wall> wallsOf(const CaseConfig& c) {
     std::vector<Wall> walls;
     for (const WallSpec& w : c.walls) walls.push_back(wallOf(w));
@@ -195,14 +207,14 @@ std::vector<Wall> wallsOf(const CaseConfig& c) {
 class RunOutputs {
   public:
     RunOutputs(const CaseConfig& c, const RunOptions& options, const Reference& ref,
-               std::vector<CheckpointInput> inputs)
+               const std::vector<std::string>& bodies, std::vector<CheckpointInput> inputs)
         : c_(c),
           options_(options),
           log_(*options.log),
           ref_(ref),
           inputs_(std::move(inputs)),
           provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
-          history_(options.runDir / "history.csv", wallsOf(c)),
+          history_(options.runDir / "history.csv", bodies, wallsOf(c)),
           progress_(options.progress, c.endTime, ref.size()) {
         log_.beforePrint = [this] { progress_.clear(); };
     }
@@ -464,7 +476,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         options.log->add("removed " + std::to_string(stale) +
                          " temporary file(s) that an earlier, killed process left in " +
                          options.runDir.string());
-    RunOutputs out(c, options, ref, std::move(inputs));
+    RunOutputs out(c, options, ref, bodyNamesOf(file, sim), std::move(inputs));
     options.log->add(sizeLine(ref));
     // From here on the run writes its folder: a signal stops it after a step, with a checkpoint.
     if (options.steppingStarts) options.steppingStarts();

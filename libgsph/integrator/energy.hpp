@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: MIT
 // Energy and momentum of a run, for the history and the conservation tests.
 //   kinetic = Σ ½ m |v|²;  elastic = Σ V_a J_a ψ(σ_a, history_a) (ψ: the material's stored
-//   energy per current volume, V_a the quadrature volume of DESIGN §4); the ledger's works
-//   (integrated by the integrator); the contact springs' potential. Balance:
+//   energy per current volume, V_a the quadrature volume of DESIGN §4); plastic work = Σ of
+//   the particles' (State::plasticWork); the ledger's other works (integrated by the
+//   integrator); the contact springs' potential. Balance:
 //   kinetic + elastic + viscous + hourglass + plastic + damage + fracture + contact − boundary
 //   − external = const.
+// Kinetic, elastic and plastic energy and momentum are summed body by body, and the run's are
+// the sums of the bodies' in body order: the bodies' shares add up to the run's exactly.
 #pragma once
 
 #include <vector>
@@ -12,6 +15,14 @@
 #include "integrator/velocity_verlet.hpp"
 
 namespace gsph {
+
+/// One body's share of the run's per-particle energies and momentum.
+struct BodyEnergy {
+    double kinetic = 0.0;
+    double elastic = 0.0;
+    double plasticWork = 0.0;
+    Vec3 momentum = Vec3::Zero();
+};
 
 struct EnergyReport {
     double kinetic = 0.0;
@@ -25,6 +36,8 @@ struct EnergyReport {
     double contactEnergy = 0.0;      ///< potential of the penalty springs (bodies, walls)
     double externalWork = 0.0;       ///< work of gravity, set forces and walls on the bodies
     Vec3 momentum = Vec3::Zero();
+    /// Per body, in body order: kinetic, elastic, plastic work, momentum sum to the above.
+    std::vector<BodyEnergy> bodies;
     /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage + fracture
     /// + contact − boundary − external.
     double total() const {

@@ -32,7 +32,6 @@ struct KinematicsStep {
     ParticleFields& fields;
     std::vector<double>& lengthScale;
     std::vector<std::uint8_t>& failure;
-    std::vector<double>& plasticWork;
     std::vector<double>& damageDissipation;
     std::vector<double>& fractureEnergy;
     double dt;
@@ -101,7 +100,7 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
         storeHistory(point, ia, s.state);
         // Per current volume → per particle: V J (the particle's current volume).
         const double volume = s.ref.quadVolume[ia] * J;
-        s.plasticWork[ia] = volume * point.plasticWork;
+        s.state.plasticWork[ia] += volume * point.plasticWork;
         s.damageDissipation[ia] = volume * point.damageDissipation;
     }
     storeFactors(model, s, ia, F, point);
@@ -134,7 +133,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     storeSwitch(s, ia, 0.0);
     s.lengthScale[ia] = s.ref.spacing[ia];
     s.failure[ia] = 0;
-    if (!s.plasticWork.empty()) s.plasticWork[ia] = s.damageDissipation[ia] = 0.0;
+    if (!s.damageDissipation.empty()) s.damageDissipation[ia] = 0.0;
 }
 
 template <class Model>
@@ -189,10 +188,7 @@ StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& b
     for (const BodyRange& body : bodies_)
         blocks_.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
     for (const BodyRange& body : bodies_)
-        if (tracksHistory(*body.material)) {
-            plasticWork_.assign(n, 0.0);
-            damageDissipation_.assign(n, 0.0);
-        }
+        if (tracksHistory(*body.material)) damageDissipation_.assign(n, 0.0);
     if (bonds_.enabled()) fractureEnergy_.assign(n, 0.0);
 }
 
@@ -203,7 +199,6 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      fields_,
                      lengthScale_,
                      failure_,
-                     plasticWork_,
                      damageDissipation_,
                      fractureEnergy_,
                      dt,
@@ -247,14 +242,10 @@ void StressUpdate::bookDissipation(State& state) {
             partialSums_);
     for (const BodyRange& body : bodies_) {
         if (!tracksHistory(*body.material)) continue;
-        const auto sumOver = [&](const std::vector<double>& perParticle) {
-            return deterministicSum(
-                body.end - body.begin, 0.0,
-                [&](Index i) { return perParticle[static_cast<std::size_t>(body.begin + i)]; },
-                partialSums_);
-        };
-        state.ledger.plasticWork += sumOver(plasticWork_);
-        state.ledger.damageDissipation += sumOver(damageDissipation_);
+        state.ledger.damageDissipation += deterministicSum(
+            body.end - body.begin, 0.0,
+            [&](Index i) { return damageDissipation_[static_cast<std::size_t>(body.begin + i)]; },
+            partialSums_);
     }
 }
 

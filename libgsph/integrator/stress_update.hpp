@@ -3,9 +3,10 @@
 // blocks vectorise the θ-gradient sums, neighbors/stencil_blocks.hpp):
 //   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
 //   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
-//      (Johnson–Cook) also advance ε̄p, T, D, e and give their plastic work and the energy lost
-//      by failing particles; a particle detached by broken bonds releases the elastic energy its
-//      stress held as fracture energy (failure/brittle_bonds.hpp)
+//      (Johnson–Cook) also advance ε̄p, T, D, e, add their plastic work to the particle's
+//      (State::plasticWork) and give the energy lost by failing particles; a particle detached by
+//      broken bonds releases the elastic energy its stress held as fracture energy
+//      (failure/brittle_bonds.hpp)
 // and from F_{n+1}, σ_{n+1} the factors the internal force reads (K = V P G, N = V J F^{-T} G,
 // sound speed, density, the viscosity's compression switch α from tr D) and each particle's
 // current spacing ℓ_a for the time step.
@@ -41,8 +42,8 @@ class StressUpdate {
     /// Throws NumericalError naming the first particle that inverted (J ≤ 0) or whose F or σ is
     /// not finite.
     void advance(State& state, double dt, bool atRest);
-    /// Adds this step's plastic work, failure losses and fracture energy of detached particles
-    /// to the state's ledger, in a fixed order.
+    /// Adds this step's failure losses and fracture energy of detached particles to the
+    /// state's ledger, in a fixed order (the plastic work is booked per particle by advance).
     void bookDissipation(State& state);
 
     const StressFactors& factors() const { return factors_; }
@@ -64,9 +65,9 @@ class StressUpdate {
     std::vector<StencilBlocks> blocks_;
     std::vector<double> lengthScale_;
     std::vector<std::uint8_t> failure_;  ///< per particle: why the update failed (0: it did not)
-    /// Per particle, this step's V J Δw_p and failure loss [J] (sized only when a body's model
-    /// tracks a history).
-    std::vector<double> plasticWork_, damageDissipation_;
+    /// Per particle, this step's failure loss [J] (sized only when a body's model tracks a
+    /// history).
+    std::vector<double> damageDissipation_;
     /// Per particle, the elastic energy released when it was detached [J] (sized only when
     /// bonds can break; written by the detaching step alone, zero before and after it).
     std::vector<double> fractureEnergy_;

@@ -169,11 +169,8 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     checkFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor);
     Checkpoint c;
     c.provenance = readProvenance(f);
-    c.state.forEachArray([&](const char* name, auto& array) {
-        // 1.0 files have no wall forces: Simulation::resume takes them as zero.
-        if (std::string(name) == "wall_force" && !f.exists(kStateGroup + name)) return;
-        readArray(f, kStateGroup + name, array);
-    });
+    c.state.forEachArray(
+        [&](const char* name, auto& array) { readArray(f, kStateGroup + name, array); });
     c.state.forEachScalar(
         [&](const char* name, auto& value) { readScalar(f, kScalarGroup + name, value); });
     c.run = readRunRecord(f);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Checkpoint files (DESIGN §1): the whole State of a run, so that a restart continues it bit
 // for bit, plus what the run's driver needs to resume its own schedule. HDF5, format
-// "gsph-checkpoint" 1.1 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
+// "gsph-checkpoint" 2.0 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /state/NAME            every array of State::forEachArray (Vec3: N×3, Mat3: N×9 row-major,
 //                          double: N, uint8: per pair), stored exactly (no conversion)
@@ -28,8 +28,9 @@
 namespace gsph {
 
 inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
-inline constexpr int kCheckpointFormatMajor = 1;
-inline constexpr int kCheckpointFormatMinor = 1;  ///< 1.1: /state/wall_force
+/// 2.0: the plastic work per particle (/state/plastic_work) replaces the ledger's scalar.
+inline constexpr int kCheckpointFormatMajor = 2;
+inline constexpr int kCheckpointFormatMinor = 0;
 
 /// A file the run was built from: a restart refuses to continue if its bytes changed.
 struct CheckpointInput {

@@ -15,7 +15,6 @@ struct EnergyLedger {
     double viscousWork = 0.0;    ///< dissipated by artificial viscosity (≥ 0)
     double hourglassWork = 0.0;  ///< stored/dissipated by the hourglass control
     double boundaryWork = 0.0;   ///< done on the body by prescribed-velocity particles
-    double plasticWork = 0.0;    ///< dissipated by plastic flow, Σ V J Δw_p (≥ 0)
     /// Elastic energy the failed particles lost when their damage reached 1 (DESIGN §5).
     double damageDissipation = 0.0;
     /// Elastic energy released by brittle bond failure [J]: the stored energy of the particles
@@ -52,6 +51,10 @@ struct State {
     /// Specific internal energy of compression e [J/kg], ∫ −p tr(D)/ρ dt: the energy term of the
     /// Mie–Grüneisen equation of state (materials/eos.hpp); 0 for models that do not need it.
     std::vector<double> internalEnergy;
+    /// Work dissipated by plastic flow in the particle over the run, Σ V J Δw_p [J] (≥ 0): kept
+    /// per particle rather than in the ledger so that the bodies' shares add up to the run's
+    /// plastic work exactly (integrator/energy.hpp).
+    std::vector<double> plasticWork;
     /// Per pair of Reference::pairs (CSR order): 1 while the bond holds, 0 once broken for good
     /// (DESIGN §5). Both directions (a,b) and (b,a) carry the same value.
     std::vector<std::uint8_t> bondIntact;
@@ -94,7 +97,6 @@ struct State {
         visit("ledger/viscous_work", s.ledger.viscousWork);
         visit("ledger/hourglass_work", s.ledger.hourglassWork);
         visit("ledger/boundary_work", s.ledger.boundaryWork);
-        visit("ledger/plastic_work", s.ledger.plasticWork);
         visit("ledger/damage_dissipation", s.ledger.damageDissipation);
         visit("ledger/fracture_energy", s.ledger.fractureEnergy);
         visit("ledger/viscous_power", s.ledger.viscousPower);
@@ -115,6 +117,7 @@ struct State {
         visit("temperature", s.temperature);
         visit("damage", s.damage);
         visit("internal_energy", s.internalEnergy);
+        visit("plastic_work", s.plasticWork);
         visit("bond_intact", s.bondIntact);
         visit("wall_force", s.wallForce);
     }
@@ -136,6 +139,7 @@ struct State {
         s.temperature.assign(n, kRoomTemperature);
         s.damage.assign(n, 0.0);
         s.internalEnergy.assign(n, 0.0);
+        s.plasticWork.assign(n, 0.0);
         s.bondIntact.assign(pairCount, 1);
         return s;
     }

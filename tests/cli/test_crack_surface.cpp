@@ -2,7 +2,9 @@
 // Crack surfaces of gsph-post (post/crack_surface.hpp): a block of 16³ particles whose bonds
 // crossing a plane are broken (set in State::bondIntact, written with the library's snapshot
 // writer) gives Voronoi facets whose area is the cut's area; no broken bond gives no facet;
-// the facets move with an affine motion exactly; gsph-post writes them as .vtp in cracks.pvd.
+// the facets move with an affine motion exactly; a second body beside the block leaves the
+// block's facets as they are alone; ghosts that nearly meet across a gap keep the facets;
+// gsph-post writes them as .vtp in cracks.pvd.
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -206,6 +208,109 @@ TEST_F(CrackSurfaceTest, FacetsMoveWithAnAffineMotion) {
     for (std::size_t p = 0; p < moved.points.size(); ++p)
         worst = std::max(worst, (moved.points[p] - (A * still.points[p] + shift)).norm());
     EXPECT_LT(worst, 1e-12);
+}
+
+// Two bodies: a striker (10 × 10 × 5 particles of spacing 0.8 h, its lattice off the cube's)
+// whose face hovers h/10 above the cube's top face, then the cube, body 1 (its particles after
+// the striker's). The cube is cut at mid-height, one layer below its top face (z = 15/16) and
+// vertically (x = 1/2, under the striker). Each body is triangulated alone, so the cube's facets
+// are those of the cube alone, bit for bit: the same polygons, areas, projected areas and points
+// (the cube moved by an affine motion), their bonds shifted by the striker's particles. One
+// triangulation over both bodies is printed beside.
+TEST_F(CrackSurfaceTest, SecondBodyLeavesTheFacetsOfTheCubeAlone) {
+    const double h = 1.0 / kCells;
+    std::vector<Vec3> striker;
+    const double hs = 0.8 * h;  // the striker's spacing, its lattice off the cube's
+    for (int k = 0; k < 5; ++k)
+        for (int j = 0; j < 10; ++j)
+            for (int i = 0; i < 10; ++i)
+                striker.emplace_back(0.3 + (i + 0.5) * hs, 0.27 + (j + 0.5) * hs,
+                                     1.0 + 0.1 * h + (k + 0.5) * hs);
+    const auto shift = static_cast<Index>(striker.size());
+    std::vector<Vec3> X = striker;
+    X.insert(X.end(), ref_->X.begin(), ref_->X.end());
+    std::vector<Index> body(striker.size(), 0);
+    body.resize(X.size(), 1);
+    const post::CrackSurfaces both(X, body);
+    EXPECT_EQ(both.flatBodies(), 0u);
+    Mat3 A;
+    A << 1.05, 0.1, 0.0, -0.05, 0.95, 0.2, 0.0, 0.03, 1.1;
+    const std::pair<Vec3, Vec3> cuts[] = {{Vec3::UnitZ(), Vec3(0.5, 0.5, 0.5)},
+                                          {Vec3::UnitZ(), Vec3(0.5, 0.5, 15.0 / 16.0)},
+                                          {Vec3::UnitX(), Vec3(0.5, 0.5, 0.5)}};
+    for (const auto& [normal, centre] : cuts) {
+        TempDir dir;
+        State state = cutAlong(*ref_, normal, centre);
+        for (std::size_t a = 0; a < state.x.size(); ++a) {
+            state.x[a] = A * ref_->X[a] + Vec3(0.01, 0.0, -0.02);
+            state.F[a] = A;
+        }
+        const Snapshot alone = throughFile(*ref_, state, dir / "snapshot_000000.h5");
+        // The two-body snapshot: the striker at rest, then the cube's particles and bonds.
+        Snapshot two;
+        two.X = X;
+        two.x = striker;
+        two.x.insert(two.x.end(), alone.x.begin(), alone.x.end());
+        two.F.assign(striker.size(), Mat3::Identity());
+        two.F.insert(two.F.end(), alone.F.begin(), alone.F.end());
+        two.body = body;
+        for (const auto& [a, b] : alone.brokenBonds)
+            two.brokenBonds.push_back({a + shift, b + shift});
+        const post::CrackSurface c1 = cracks_->surface(alone);
+        const post::CrackSurface c2 = both.surface(two);
+        const post::CrackSurface joint = post::CrackSurfaces(X).surface(two);
+        std::printf(
+            "cut %s: the cube alone %zu facets (%zu broken bonds without), with the "
+            "striker %zu facets (%zu without); one triangulation over both bodies: %zu facets "
+            "(%zu without)\n",
+            normal[0] > 0.0   ? "x = 0.5"
+            : centre[2] > 0.9 ? "z = 15/16"
+                              : "z = 0.5",
+            c1.polygons(), c1.brokenBondsWithoutFacet, c2.polygons(), c2.brokenBondsWithoutFacet,
+            joint.polygons(), joint.brokenBondsWithoutFacet);
+        ASSERT_GT(c1.polygons(), 0u);
+        ASSERT_EQ(c2.polygons(), c1.polygons());
+        EXPECT_EQ(c2.brokenBondsWithoutFacet, c1.brokenBondsWithoutFacet);
+        EXPECT_EQ(c2.offsets, c1.offsets);
+        EXPECT_EQ(c2.connectivity, c1.connectivity);
+        EXPECT_EQ(c2.referenceArea, c1.referenceArea);
+        EXPECT_EQ(c2.projectedArea, c1.projectedArea);
+        ASSERT_EQ(c2.points.size(), c1.points.size());
+        for (std::size_t p = 0; p < c1.points.size(); ++p) EXPECT_EQ(c2.points[p], c1.points[p]);
+        for (std::size_t p = 0; p < c1.polygons(); ++p) {
+            EXPECT_EQ(c2.bond[p][0], c1.bond[p][0] + shift);
+            EXPECT_EQ(c2.bond[p][1], c1.bond[p][1] + shift);
+        }
+    }
+}
+
+// One body of two slabs: a lattice of 12 × 12 × 9 particles (spacing h = 13 mm) with its middle
+// layer left out and the upper slab raised by 1e-16 m: the ghosts of the two faces across the
+// gap nearly coincide. A cut through the lower slab still gives its 12 × 12 facets of area h²
+// each (a merge tolerance from the ghosts' spacing would merge every Voronoi vertex into one:
+// no facet at all).
+TEST(CrackSurface, GhostsMeetingAcrossAGapKeepTheFacets) {
+    const double h = 0.013;
+    const int n = 12;
+    Snapshot s;
+    for (int k = 0; k < 9; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                if (k != 4)
+                    s.X.emplace_back((i + 0.5) * h, (j + 0.5) * h,
+                                     (k + 0.5) * h + (k > 4 ? 1e-16 : 0.0));
+    s.x = s.X;
+    s.F.assign(s.X.size(), Mat3::Identity());
+    s.body.assign(s.X.size(), 0);
+    // The axis bonds across z = 2h (between layers 1 and 2).
+    const Index perLayer = n * n;
+    for (Index a = perLayer; a < 2 * perLayer; ++a) s.brokenBonds.push_back({a, a + perLayer});
+    const post::CrackSurfaces slabs(s.X, s.body);
+    const post::CrackSurface c = slabs.surface(s);
+    std::printf("two slabs: %zu facets, area %.9e m² (exact %.9e), %zu ghosts\n", c.polygons(),
+                c.totalReferenceArea(), perLayer * h * h, slabs.ghosts());
+    EXPECT_EQ(c.polygons(), static_cast<std::size_t>(perLayer));
+    EXPECT_NEAR(c.totalReferenceArea(), perLayer * h * h, 1e-12 * perLayer * h * h);
 }
 
 // gsph-post on a run folder: an intact snapshot and a cut one; crack_*.vtp in cracks.pvd, the

@@ -11,6 +11,7 @@
 #include <unistd.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -147,7 +148,7 @@ TEST_F(Restart, JohnsonCookRunWithDamageAndBrokenBondsIsBitIdentical) {
     const auto broken = [](const std::vector<std::uint8_t>& intact) {
         return std::count(intact.begin(), intact.end(), std::uint8_t{0}) / 2;
     };
-    EXPECT_GT(stopped.ledger.plasticWork, 0.0);
+    EXPECT_GT(*std::max_element(stopped.plasticWork.begin(), stopped.plasticWork.end()), 0.0);
     EXPECT_GT(stopped.ledger.damageDissipation, 0.0);
     const Snapshot last = readSnapshot(dir_ / "B/snapshot_000005.h5");
     EXPECT_NEAR(last.time, 2e-5, 1e-15);

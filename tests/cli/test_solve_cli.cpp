@@ -160,8 +160,9 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     // Energy: the ledger balances the boundary work (the driven face) within 1 %.
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
-    ASSERT_EQ(header.size(), 16u);
-    // The documented order (docs/formats.md): clock, energies, total, momentum.
+    ASSERT_EQ(header.size(), 22u);
+    // The documented order (docs/formats.md): clock, energies, total, momentum, then the body's
+    // (the bar's) share of the energies and momentum.
     const std::vector<std::string> expected = {"time",
                                                "step",
                                                "dt",
@@ -177,7 +178,13 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
                                                "total_energy",
                                                "momentum_x",
                                                "momentum_y",
-                                               "momentum_z"};
+                                               "momentum_z",
+                                               "body_bar_kinetic_energy",
+                                               "body_bar_internal_energy",
+                                               "body_bar_plastic_work",
+                                               "body_bar_momentum_x",
+                                               "body_bar_momentum_y",
+                                               "body_bar_momentum_z"};
     EXPECT_EQ(header, expected);
     const auto col = [&](const std::string& name) {
         return static_cast<std::size_t>(std::find(header.begin(), header.end(), name) -
@@ -396,15 +403,17 @@ TEST(SolveCli, HistoryHasEachWallsForceAndDisplacement) {
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
-    const std::size_t runColumns = 16;  // time … momentum_z (docs/formats.md), then the walls'
-    ASSERT_EQ(header.size(), runColumns + 2 * 6);
+    // time … momentum_z (docs/formats.md), then the walls', then the bar's.
+    const std::size_t runColumns = 16;
+    ASSERT_EQ(header.size(), runColumns + 2 * 6 + 6);
     const std::vector<std::string> floor = {"wall_floor_fx", "wall_floor_fy", "wall_floor_fz",
                                             "wall_floor_ux", "wall_floor_uy", "wall_floor_uz"};
     EXPECT_EQ(
         std::vector<std::string>(header.begin() + runColumns, header.begin() + runColumns + 6),
         floor);
     EXPECT_EQ(header[runColumns + 6], "wall_far_wall_2_fx");
-    EXPECT_EQ(header.back(), "wall_far_wall_2_uz");
+    EXPECT_EQ(header[runColumns + 11], "wall_far_wall_2_uz");
+    EXPECT_EQ(header[runColumns + 12], "body_bar_kinetic_energy");
     const auto col = [&](const std::string& name) {
         const auto it = std::find(header.begin(), header.end(), name);
         EXPECT_NE(it, header.end()) << name;
@@ -439,6 +448,129 @@ TEST(SolveCli, HistoryHasEachWallsForceAndDisplacement) {
         EXPECT_NEAR(row[col("wall_far_wall_2_uz")], 2.0 * row[col("time")],
                     1e-9 * 2.0 * row[col("time")]);
     }
+}
+
+// Two blocks as a particle file dir/particles.h5: a 12 × 12 × 6 mm anvil of 2 mm cells and a
+// 6 mm cube of 2 mm cells 0.5 mm above its middle; `groups`: their physical volumes (gmsh).
+test::ProcessResult twoBlocks(const TempDir& dir, const std::string& groups) {
+    std::ofstream(dir / "two.geo") << R"(
+Point(1) = {0, 0, 0}; Point(2) = {0.012, 0, 0}; Point(3) = {0.012, 0.012, 0};
+Point(4) = {0, 0.012, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};
+Transfinite Curve{1:4} = 7; Transfinite Surface{1}; Recombine Surface{1};
+a[] = Extrude {0, 0, 0.006} { Surface{1}; Layers{3}; Recombine; };
+Point(101) = {0.003, 0.003, 0.0065}; Point(102) = {0.009, 0.003, 0.0065};
+Point(103) = {0.009, 0.009, 0.0065}; Point(104) = {0.003, 0.009, 0.0065};
+Line(101) = {101, 102}; Line(102) = {102, 103}; Line(103) = {103, 104}; Line(104) = {104, 101};
+Curve Loop(101) = {101, 102, 103, 104}; Plane Surface(101) = {101};
+Transfinite Curve{101:104} = 4; Transfinite Surface{101}; Recombine Surface{101};
+b[] = Extrude {0, 0, 0.006} { Surface{101}; Layers{3}; Recombine; };
+)" + groups;
+    return runCommand(std::string(GSPH_PREPROC_EXE) + " " + (dir / "two.geo").string() + " -q -o " +
+                      (dir / "particles.h5").string());
+}
+
+// Per-body columns of history.csv (LS-DYNA's matsum): a copper anvil, whose physical volume
+// has no name (columns body_0_…), struck at 150 m/s by an elastic steel block named "striker-1"
+// (body_striker_1_…), contact between them, a floor wall far below. After the run's and the
+// wall's columns, each body's kinetic and internal energy, plastic work and momentum; in every
+// row the bodies' columns add up to the run's to the digits printed (the library's sums are
+// exact: EnergyReport.BodiesAddUpToTheRunExactly).
+TEST(SolveCli, HistoryHasEachBodysEnergiesAndMomentum) {
+    TempDir dir;
+    const auto p = twoBlocks(
+        dir, "Physical Volume(7) = {a[1]};\nPhysical Volume(\"striker-1\", 9) = {b[1]};\n");
+    ASSERT_EQ(p.status, 0) << p.err;
+    std::ofstream(dir / "two.toml")
+        << "[run]\nparticles = \"particles.h5\"\nend_time = 1.2e-5\noutput_interval = 3.0e-6\n"
+           "history_interval = 5.0e-7\n"
+           "[contact]\nbetween_bodies = true\npenalty = 4.0\n"
+           "[[material]]\nname = \"copper\"\nfile = \"" +
+               (kSource / "materials/ofhc_copper.toml").string() +
+               "\"\n"
+               "[[material]]\nname = \"steel\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
+               "poisson_ratio = 0.3\n"
+               "[[body]]\ngroup = \"0\"\nmaterial = \"copper\"\n"
+               "[[body]]\ngroup = \"striker-1\"\nmaterial = \"steel\"\n"
+               "velocity = [0.0, 0.0, -150.0]\n"
+               "[[wall]]\nname = \"floor\"\npoint = [0.0, 0.0, -0.01]\n"
+               "normal = [0.0, 0.0, 1.0]\n";
+    const auto r =
+        runCommand(kSolve + " " + (dir / "two.toml").string() + " -o " + (dir / "run").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(dir / "run" / "history.csv", header);
+    const std::size_t runColumns = 16, wallColumns = 6;
+    const std::vector<std::string> suffixes = {"kinetic_energy", "internal_energy", "plastic_work",
+                                               "momentum_x",     "momentum_y",      "momentum_z"};
+    ASSERT_EQ(header.size(), runColumns + wallColumns + 2 * suffixes.size());
+    EXPECT_EQ(header[runColumns], "wall_floor_fx");
+    for (std::size_t k = 0; k < suffixes.size(); ++k) {
+        EXPECT_EQ(header[runColumns + wallColumns + k], "body_0_" + suffixes[k]);
+        EXPECT_EQ(header[runColumns + wallColumns + suffixes.size() + k],
+                  "body_striker_1_" + suffixes[k]);
+    }
+    const auto col = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    ASSERT_GT(rows.size(), 20u);
+    double worst = 0.0;  // the largest mismatch, relative to the magnitudes summed
+    for (const auto& row : rows)
+        for (const std::string& suffix : suffixes) {
+            const double anvil = row[col("body_0_" + suffix)];
+            const double striker = row[col("body_striker_1_" + suffix)];
+            const double run = row[col(suffix)];
+            const double scale = std::abs(anvil) + std::abs(striker) + std::abs(run);
+            // Each value is printed to 10 significant digits (relative error ≤ 5e-10).
+            EXPECT_LE(std::abs(anvil + striker - run), 1e-9 * scale + 1e-300)
+                << suffix << " at t = " << row[col("time")];
+            if (scale > 0.0) worst = std::max(worst, std::abs(anvil + striker - run) / scale);
+        }
+    const auto& first = rows.front();
+    const auto& last = rows.back();
+    std::printf(
+        "[body columns] %zu rows; worst |Σ bodies − run| / Σ|.| %.1e; at the end: anvil kinetic "
+        "%.4e J, internal %.4e J, plastic %.4e J, momentum_z %.4e kg m/s; striker kinetic %.4e "
+        "J (from %.4e J), plastic %.1e J\n",
+        rows.size(), worst, last[col("body_0_kinetic_energy")], last[col("body_0_internal_energy")],
+        last[col("body_0_plastic_work")], last[col("body_0_momentum_z")],
+        last[col("body_striker_1_kinetic_energy")], first[col("body_striker_1_kinetic_energy")],
+        last[col("body_striker_1_plastic_work")]);
+    // At t = 0 the striker carries the run's kinetic energy and momentum, the anvil none.
+    EXPECT_EQ(first[col("body_0_kinetic_energy")], 0.0);
+    EXPECT_EQ(first[col("body_striker_1_kinetic_energy")], first[col("kinetic_energy")]);
+    EXPECT_EQ(first[col("body_striker_1_momentum_z")], first[col("momentum_z")]);
+    // The blow: the anvil took momentum and flowed; the elastic striker dissipates nothing.
+    EXPECT_LT(last[col("body_0_momentum_z")], 0.0);
+    EXPECT_GT(last[col("body_0_plastic_work")], 0.0);
+    EXPECT_EQ(last[col("body_striker_1_plastic_work")], 0.0);
+    EXPECT_LT(last[col("body_striker_1_kinetic_energy")],
+              first[col("body_striker_1_kinetic_energy")]);
+}
+
+// Two bodies whose names make the same columns (body_ball_1_…) are refused before the run
+// starts, with one line naming both.
+TEST(SolveCli, BodiesWithTheSameHistoryColumnsAreRefused) {
+    TempDir dir;
+    const auto p = twoBlocks(dir,
+                             "Physical Volume(\"ball-1\", 7) = {a[1]};\n"
+                             "Physical Volume(\"ball_1\", 9) = {b[1]};\n");
+    ASSERT_EQ(p.status, 0) << p.err;
+    std::ofstream(dir / "same.toml") << "[run]\nparticles = \"particles.h5\"\nend_time = 1.0e-6\n" +
+                                            kSteelBar.substr(0, kSteelBar.find("[[body]]")) +
+                                            "[[body]]\ngroup = \"ball-1\"\nmaterial = \"steel\"\n"
+                                            "[[body]]\ngroup = \"ball_1\"\nmaterial = \"steel\"\n";
+    const auto r =
+        runCommand(kSolve + " " + (dir / "same.toml").string() + " -o " + (dir / "run").string());
+    EXPECT_EQ(r.status, 1);
+    EXPECT_NE(r.err.find("bodies 'ball-1' and 'ball_1' would have the same history columns "
+                         "(body_ball_1_…)"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir / "run" / "history.csv"));
 }
 
 }  // namespace

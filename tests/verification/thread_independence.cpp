@@ -67,7 +67,8 @@ TEST(ThreadIndependence, OneAndTwoThreadsGiveBitIdenticalStates) {
 
 TEST(ThreadIndependence, PlasticRunsAreBitIdenticalToo) {
     // Johnson–Cook with damage, heating and the Mie–Grüneisen pressure: the history arrays and
-    // the ledger's plastic work and failure loss do not depend on the thread count either.
+    // the particles' plastic work and the ledger's failure loss do not depend on the thread
+    // count either.
     const Material plastic = testing::softFailingSteel();
     EnergyReport e1, e2;
     const State s1 = runWithThreads(1, &e1, plastic, 40);
@@ -78,8 +79,10 @@ TEST(ThreadIndependence, PlasticRunsAreBitIdenticalToo) {
     EXPECT_TRUE(bitIdentical(s1.temperature, s2.temperature));
     EXPECT_TRUE(bitIdentical(s1.damage, s2.damage));
     EXPECT_TRUE(bitIdentical(s1.internalEnergy, s2.internalEnergy));
+    EXPECT_TRUE(bitIdentical(s1.plasticWork, s2.plasticWork));
     EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
     EXPECT_EQ(std::memcmp(&e1.elastic, &e2.elastic, sizeof(double)), 0);
+    EXPECT_EQ(std::memcmp(&e1.plasticWork, &e2.plasticWork, sizeof(double)), 0);
     EXPECT_GT(e1.plasticWork, 0.0);
     EXPECT_GT(e1.damageDissipation, 0.0);
 }
