@@ -323,13 +323,6 @@ Occupancy occupancyOf(const ParticleFile& pf, Index s) {
 
 namespace {
 
-/// Continued-lattice locations of the particles of space t in space s (overset.hpp): per
-/// particle of t, u in s's frame and the cells it lies beyond the shared face, or none if its
-/// block shares no face with a block of s.
-struct Continuation {
-    std::vector<std::optional<SpaceLocation>> found;
-};
-
 /// The block's entry in its space.
 std::size_t entryOf(const GluedSpace& space, Index block) {
     const auto it = std::find(space.blocks.begin(), space.blocks.end(), block);
@@ -346,7 +339,7 @@ int cellsOutside(const Int3& cell, const Int3& cells) {
 /// u of particle b (of space t) in space s by the continued lattice, or none.
 std::optional<SpaceLocation> continueLattice(const ParticleFile& pf, const SpaceMaps& maps,
                                              const ParticleOrigins& origins, Index s, Index b,
-                                             std::vector<Index>& spaceOfBlock) {
+                                             const std::vector<Index>& spaceOfBlock) {
     const GluingResult& glued = *origins.glued;
     const std::vector<BlockLattice>& blocks = *origins.blocks;
     const Index B = origins.block[static_cast<std::size_t>(b)];
