@@ -297,7 +297,7 @@ void applyOverset(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
     compact(cutHoles(mesh.source, pf, maps, ranking, stats.spaceVolumes, stats.cuts), as);
     stats.oversetKappa = options.oversetKappa;
     const ParticleOrigins origins{
-        &glued, &blocks, as.block, as.blockCell, as.out.elementOfParticle, stats.spaceVolumes};
+        &glued, &blocks, as.block, as.blockCell, as.out.elementOfParticle, &stats.spaceVolumes};
     findTransients(mesh.source, pf, maps, origins, options.oversetKappa, options.transients,
                    stats.transients);
 }

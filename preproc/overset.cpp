@@ -275,15 +275,7 @@ struct Occupancy {
                 for (int i = lo[0]; i <= hi[0]; ++i) {
                     const Vec3 offset = u - Vec3(i + 0.5, j + 0.5, k + 0.5);
                     if (offset.squaredNorm() >= r2) continue;
-                    const Int3 c = {i, j, k};
-                    std::size_t index = 0;
-                    for (int d = 2; d >= 0; --d) {
-                        const int w =
-                            periodic[d] ? ((c[d] % cells[d]) + cells[d]) % cells[d] : c[d];
-                        index = index * static_cast<std::size_t>(cells[d]) +
-                                static_cast<std::size_t>(w);
-                    }
-                    if (used[index]) return true;
+                    if (used[indexOf({i, j, k})]) return true;
                 }
             }
         }
@@ -292,14 +284,22 @@ struct Occupancy {
 
     /// True if u lies in a used cell.
     bool holds(const Vec3& u) const {
+        const Int3 c = {static_cast<int>(std::floor(u[0])), static_cast<int>(std::floor(u[1])),
+                        static_cast<int>(std::floor(u[2]))};
+        for (int d = 0; d < 3; ++d) {
+            if (!periodic[d] && (c[d] < 0 || c[d] >= cells[d])) return false;
+        }
+        return used[indexOf(c)] != 0;
+    }
+
+    /// Row of cell c in `used` (i fastest), periodic indices wrapped.
+    std::size_t indexOf(const Int3& c) const {
         std::size_t index = 0;
         for (int d = 2; d >= 0; --d) {
-            int c = static_cast<int>(std::floor(u[d]));
-            if (periodic[d]) c = ((c % cells[d]) + cells[d]) % cells[d];
-            if (c < 0 || c >= cells[d]) return false;
-            index = index * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(c);
+            const int w = periodic[d] ? ((c[d] % cells[d]) + cells[d]) % cells[d] : c[d];
+            index = index * static_cast<std::size_t>(cells[d]) + static_cast<std::size_t>(w);
         }
-        return used[index] != 0;
+        return index;
     }
 };
 
@@ -451,10 +451,11 @@ void findTransients(const std::string& source, ParticleFile& pf, const SpaceMaps
                     TransientReport{t, s, 0, continued[static_cast<std::size_t>(t)] != 0, 0.0, 0};
             }
         }
+        const double dtheta = pf.spaces[static_cast<std::size_t>(s)].dtheta;
         char reachText[32];
         std::snprintf(reachText, sizeof reachText, "%g", reach);
         const std::string remedy = ": " +
-                                   spaceLabel(static_cast<std::size_t>(s), pf, origins.volumes) +
+                                   spaceLabel(static_cast<std::size_t>(s), pf, *origins.volumes) +
                                    " has cells next to its boundary too coarse or distorted to "
                                    "reach this far (2 kappa = " +
                                    reachText +
@@ -465,9 +466,9 @@ void findTransients(const std::string& source, ParticleFile& pf, const SpaceMaps
             return "particle " + std::to_string(b) + " at X = " + point(pf.X[b]) +
                    " (gmsh element " +
                    std::to_string(origins.element[static_cast<std::size_t>(b)]) + ") of " +
-                   spaceLabel(static_cast<std::size_t>(pf.space[b]), pf, origins.volumes) +
+                   spaceLabel(static_cast<std::size_t>(pf.space[b]), pf, *origins.volumes) +
                    " is within one kernel support of " +
-                   spaceLabel(static_cast<std::size_t>(s), pf, origins.volumes) +
+                   spaceLabel(static_cast<std::size_t>(s), pf, *origins.volumes) +
                    " but cannot be located there: ";
         };
         // Cells of s taken by a transient of a continued pair: two may not share one.
@@ -492,20 +493,20 @@ void findTransients(const std::string& source, ParticleFile& pf, const SpaceMaps
                                                  std::lround(loc.u[2] * 2.0)};
                 const auto [it, added] = taken.try_emplace(key, b);
                 if (!added || occupancy.holds(loc.u)) {
+                    const std::string other = added ? "a particle of that space"
+                                                    : "particle " + std::to_string(it->second);
                     throw MeshError(source + ": " + where(b) +
                                     "continued across a shared block face, it lands on the "
                                     "theta = " +
-                                    point(loc.u) + " of particle " +
-                                    std::to_string(added ? Index(-1) : it->second) +
+                                    point(loc.u) + " of " + other +
                                     "; give the blocks around it other --priority or mesh the "
                                     "region as one block");
                 }
             }
             o.particle.push_back(b);
             o.space.push_back(s);
-            o.theta.push_back(loc.u * pf.spaces[static_cast<std::size_t>(s)].dtheta);
+            o.theta.push_back(loc.u * dtheta);
             // DESIGN §3: ω = V / det(∂X/∂θ), with ∂X/∂θ = (∂X/∂u)/Δθ.
-            const double dtheta = pf.spaces[static_cast<std::size_t>(s)].dtheta;
             o.omega.push_back(pf.volume[b] * dtheta * dtheta * dtheta / loc.detJ);
             pf.transient[b] = 1;
             TransientReport& r = bySpace[pf.space[b]];

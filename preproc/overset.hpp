@@ -30,6 +30,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -98,10 +99,10 @@ enum class TransientRule {
 struct ParticleOrigins {
     const GluingResult* glued = nullptr;
     const std::vector<BlockLattice>* blocks = nullptr;
-    std::vector<Index> block;               ///< per particle: its block (index into *blocks)
-    std::vector<Int3> blockCell;            ///< per particle: its cell in its block's frame
-    std::vector<std::size_t> element;       ///< per particle: gmsh element tag of its hex
-    std::vector<std::vector<int>> volumes;  ///< per space: gmsh volume tags of its blocks
+    std::span<const Index> block;          ///< per particle: its block (index into *blocks)
+    std::span<const Int3> blockCell;       ///< per particle: its cell in its block's frame
+    std::span<const std::size_t> element;  ///< per particle: gmsh element tag of its hex
+    const std::vector<std::vector<int>>* volumes = nullptr;  ///< per space: its gmsh volumes
 };
 
 /// "space 1 of body 'rod' (gmsh volumes 2,3,4,5)".

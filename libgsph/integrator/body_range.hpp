@@ -2,6 +2,9 @@
 // A body of a run: its contiguous particle range (Reference invariant) and its material.
 #pragma once
 
+#include <vector>
+
+#include "core/parallel.hpp"
 #include "core/types.hpp"
 #include "materials/material.hpp"
 
@@ -11,5 +14,13 @@ struct BodyRange {
     Index begin = 0, end = 0;
     const Material* material = nullptr;
 };
+
+/// Σ over the body's particles of term(a), a the particle index, in deterministicSum's fixed
+/// order; `partial` is its scratch.
+template <class T, class Term>
+T sumOverBody(const BodyRange& body, T zero, Term&& term, std::vector<T>& partial) {
+    return deterministicSum(
+        body.end - body.begin, zero, [&](Index i) { return term(body.begin + i); }, partial);
+}
 
 }  // namespace gsph

@@ -9,13 +9,6 @@
 namespace gsph {
 namespace {
 
-// Σ over the body's particles of term(a), a the particle index (fixed order).
-template <class T, class Term>
-T sumOverBody(const BodyRange& body, T zero, Term&& term, std::vector<T>& partial) {
-    return deterministicSum(
-        body.end - body.begin, zero, [&](Index i) { return term(body.begin + i); }, partial);
-}
-
 BodyEnergy measureBody(const Reference& ref, const State& state, const BodyRange& body,
                        std::vector<double>& partial, std::vector<Vec3>& partialVec) {
     BodyEnergy e;

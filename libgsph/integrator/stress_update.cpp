@@ -242,9 +242,8 @@ void StressUpdate::bookDissipation(State& state) {
             partialSums_);
     for (const BodyRange& body : bodies_) {
         if (!tracksHistory(*body.material)) continue;
-        state.ledger.damageDissipation += deterministicSum(
-            body.end - body.begin, 0.0,
-            [&](Index i) { return damageDissipation_[static_cast<std::size_t>(body.begin + i)]; },
+        state.ledger.damageDissipation += sumOverBody(
+            body, 0.0, [&](Index a) { return damageDissipation_[static_cast<std::size_t>(a)]; },
             partialSums_);
     }
 }
