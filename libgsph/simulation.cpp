@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "contact/contact_stages.hpp"
 #include "core/error.hpp"
 #include "io/checkpoint.hpp"
 #include "reference/reference_builder.hpp"
@@ -76,6 +77,10 @@ std::vector<Vec3> Simulation::wallForces() const {
     return integrator_ ? state_.wallForce : std::vector<Vec3>{};
 }
 
+std::vector<Vec3> Simulation::contactForces() const {
+    return integrator_ ? state_.contactForce : std::vector<Vec3>{};
+}
+
 // The one place the integrator is built: a fresh start and a resumed run see the same
 // constraints, loads and walls.
 void Simulation::makeIntegrator() {
@@ -93,6 +98,8 @@ void Simulation::resume(State state, const std::string& source) {
     if (integrator_) throw Error("resume() must come before the first step");
     State expected = State::atRest(ref_.X, static_cast<std::size_t>(ref_.pairs.pairs()));
     expected.wallForce.assign(walls_.size(), Vec3::Zero());
+    if (contactBetweenBodies(options_.contact, bodies_.size()))
+        expected.contactForce.assign(bodies_.size() * bodies_.size(), Vec3::Zero());
     checkStateShape(state, expected, source);
     state_ = std::move(state);
     makeIntegrator();

@@ -70,11 +70,16 @@ class Simulation {
     State& state() { return state_; }
     const std::vector<BodyRange>& bodies() const { return bodies_; }
     const VelocityVerlet& integrator() const { return *integrator_; }
+    const SolverOptions& options() const { return options_; }
     EnergyReport energy() const { return measureEnergy(ref_, state_, bodies_); }
     /// Per wall (in the order added), its force on the bodies at the last force evaluation
     /// [N] (State::wallForce, so a resumed run reports what the straight run did); empty
     /// without walls or before start().
     std::vector<Vec3> wallForces() const;
+    /// Per ordered pair of bodies (i, j) of bodies(), i·B + j, the force of j on i through the
+    /// contact between bodies at the last force evaluation [N] (State::contactForce); empty
+    /// without contact between bodies or before start().
+    std::vector<Vec3> contactForces() const;
 
   private:
     void makeIntegrator();

@@ -59,11 +59,6 @@ void writeXml(const std::filesystem::path& path, Data* data) {
 
 }  // namespace
 
-double vonMises(const Mat3& sigma) {
-    const Mat3 s = sigma - sigma.trace() / 3.0 * Mat3::Identity();
-    return std::sqrt(1.5 * s.squaredNorm());
-}
-
 namespace {
 
 // A snapshot field's value at one particle as a scalar: a vector's length, a number as it is.
@@ -105,7 +100,7 @@ bool isScalarField(const std::string& name) {
 
 double scalarField(const Snapshot& s, std::size_t a, const std::string& name) {
     if (name == "von_mises") return vonMises(s.stress[a]);
-    if (name == "pressure") return -s.stress[a].trace() / 3.0;
+    if (name == "pressure") return pressure(s.stress[a]);
     if (name == "displacement") return (s.x[a] - s.X[a]).norm();
     if (name == "J") return s.F[a].determinant();
     std::optional<double> value;
@@ -211,7 +206,7 @@ void addParticleArrays(vtkDataSetAttributes* out, const Snapshot& snap, const Ro
         const std::size_t i = rows(k);
         for (int d = 0; d < 3; ++d) u[3 * k + d] = snap.x[i][d] - snap.X[i][d];
         vm[k] = vonMises(snap.stress[i]);
-        p[k] = -snap.stress[i].trace() / 3.0;
+        p[k] = gsph::pressure(snap.stress[i]);
         detF[k] = snap.F[i].determinant();
         ids[k] = static_cast<int>(i);
         r[k] = 0.5 * std::cbrt(snap.volume[i] * detF[k]);

@@ -22,13 +22,13 @@
 #include "crack_surface.hpp"
 #include "hex_solid.hpp"
 #include "io/snapshot.hpp"
+#include "materials/stress_measures.hpp"
 
 class vtkUnstructuredGrid;
 
 namespace gsph::post {
 
-/// von Mises stress √(3/2 s:s) of a Cauchy stress [Pa].
-double vonMises(const Mat3& sigma);
+using gsph::vonMises;  // materials/stress_measures.hpp
 
 /// Scalar fields of a particle by name (vectors as their magnitude): displacement, velocity,
 /// von_mises, pressure, plastic_strain, temperature, damage, J, body, space, transient.

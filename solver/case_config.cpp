@@ -172,6 +172,28 @@ PrecrackSpec readPrecrack(const std::string& file, const toml::table& t, std::si
     return p;
 }
 
+ProbeSpec readProbe(const std::string& file, const toml::table& t) {
+    const TomlKeys r(file, t, "[[probe]]", {"name", "point", "particle", "body"});
+    ProbeSpec p;
+    p.line = r.line();
+    if (!r.has("name")) r.fail("", "missing key 'name' in [[probe]]");
+    p.name = r.text("name", "");
+    if (p.name.empty() || columnName(p.name) != p.name)
+        r.fail("name", "[[probe]] name '" + p.name +
+                           "' must be letters, digits and '_' (it names probes.csv columns)");
+    if (r.has("point") == r.has("particle"))
+        r.fail("", "[[probe]] '" + p.name + "' needs either 'point' or 'particle' (not both)");
+    p.atPoint = r.has("point");
+    if (p.atPoint) p.point = r.vector("point");
+    p.particle = r.integer("particle", -1, 0);
+    if (r.has("body")) {
+        if (!p.atPoint)
+            r.fail("body", "'body' in [[probe]] '" + p.name + "' only narrows a 'point' search");
+        p.body = r.text("body", "");
+    }
+    return p;
+}
+
 }  // namespace
 
 CaseConfig readCaseFile(const std::filesystem::path& path) {
@@ -183,11 +205,11 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
     for (const auto& [key, node] : root) {
         const std::string k(key.str());
         if (k != "run" && k != "material" && k != "body" && k != "set" && k != "wall" &&
-            k != "contact" && k != "precrack")
+            k != "contact" && k != "precrack" && k != "probe")
             throw InputError(file + ":" + std::to_string(node.source().begin.line) +
                              ": unknown table '" + k +
                              "' (expected [run], [contact], [[material]], [[body]], [[set]], "
-                             "[[wall]], [[precrack]])");
+                             "[[wall]], [[precrack]], [[probe]])");
     }
     readRun(file, root, c);
     readContact(file, root, c);
@@ -261,6 +283,16 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
     if (const toml::array* cracks = arrayOfTables(file, root, "precrack"))
         for (const toml::node& n : *cracks)
             c.precracks.push_back(readPrecrack(file, *n.as_table(), c.precracks.size()));
+    if (const toml::array* probes = arrayOfTables(file, root, "probe"))
+        for (const toml::node& n : *probes) {
+            ProbeSpec p = readProbe(file, *n.as_table());
+            for (const ProbeSpec& other : c.probes)
+                if (other.name == p.name)
+                    throw InputError(file + ":" + std::to_string(p.line) + ": [[probe]] '" +
+                                     p.name + "' is given twice (also at line " +
+                                     std::to_string(other.line) + ")");
+            c.probes.push_back(std::move(p));
+        }
     return c;
 }
 

@@ -70,6 +70,18 @@ struct PrecrackSpec {
     int line = 0;
 };
 
+/// [[probe]]: a particle whose fields go to probes.csv at every history row (LS-DYNA's nodout):
+/// the one given by index, or the one nearest to a point of the reference configuration
+/// (among a body's particles if `body` is given; the lowest index on a tie).
+struct ProbeSpec {
+    std::string name;           ///< its columns are <name>_<field> (letters, digits, '_')
+    bool atPoint = false;       ///< `point` given (else `particle`)
+    Vec3 point = Vec3::Zero();  ///< [m], reference configuration
+    long particle = -1;         ///< particle index in the particle file
+    std::string body;           ///< physical group or body id to search ("": every body)
+    int line = 0;
+};
+
 /// [contact]: the penalty law of libgsph/contact/penalty_contact.hpp.
 struct ContactSpec {
     bool betweenBodies = true;
@@ -104,6 +116,7 @@ struct CaseConfig {
     std::vector<BodySpec> bodies;
     std::vector<SetSpec> sets;
     std::vector<PrecrackSpec> precracks;
+    std::vector<ProbeSpec> probes;
 };
 
 /// Parses and validates a case file. Throws InputError "FILE:LINE: ..." on any fault.

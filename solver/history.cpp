@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "core/error.hpp"
-#include "io/atomic_file.hpp"
 
 namespace gsph::solver {
 namespace {
@@ -60,6 +59,10 @@ const WallColumn kWallColumns[] = {
      [](const State& s, const Wall& w, const Vec3&) { return w.displacement(s.time)[2]; }},
 };
 
+// Per pair of bodies (i, j), i before j, after the walls' columns (LS-DYNA's rcforc): the force
+// that j exerts on i through their contact (i exerts the opposite on j).
+const char* const kContactColumns[] = {"fx", "fy", "fz"};
+
 struct BodyColumn {
     const char* suffix;  ///< the column is body_<name>_<suffix>
     const char* format;
@@ -77,6 +80,12 @@ const BodyColumn kBodyColumns[] = {
     {"momentum_z", "%.9e", [](const BodyEnergy& b) { return b.momentum[2]; }},
 };
 
+std::vector<std::string> columnNamesOf(const std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    for (const std::string& name : names) out.push_back(columnName(name));
+    return out;
+}
+
 }  // namespace
 
 std::string columnName(const std::string& name) {
@@ -90,10 +99,12 @@ std::string columnName(const std::string& name) {
 }
 
 History::History(std::filesystem::path path, const std::vector<std::string>& bodies,
-                 std::vector<Wall> walls)
-    : path_(std::move(path)), walls_(std::move(walls)) {
+                 std::vector<Wall> walls, bool contactBetweenBodies)
+    : bodies_(columnNamesOf(bodies)),
+      walls_(std::move(walls)),
+      contact_(contactBetweenBodies),
+      table_(std::move(path), columnNames()) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
-        bodies_.push_back(columnName(bodies[b]));
         for (std::size_t other = 0; other < b; ++other)
             if (bodies_[other] == bodies_[b])
                 throw InputError("bodies '" + bodies[other] + "' and '" + bodies[b] +
@@ -101,7 +112,6 @@ History::History(std::filesystem::path path, const std::vector<std::string>& bod
                                  "_…): give their physical groups names that differ in letters "
                                  "or digits");
     }
-    text_ = header();
 }
 
 std::vector<std::string> History::columnNames() const {
@@ -110,23 +120,18 @@ std::vector<std::string> History::columnNames() const {
     for (const Wall& w : walls_)
         for (const WallColumn& c : kWallColumns)
             names.push_back("wall_" + columnName(w.name) + "_" + c.suffix);
+    if (contact_)
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+            for (std::size_t j = i + 1; j < bodies_.size(); ++j)
+                for (const char* suffix : kContactColumns)
+                    names.push_back("contact_" + bodies_[i] + "_" + bodies_[j] + "_" + suffix);
     for (const std::string& body : bodies_)
         for (const BodyColumn& c : kBodyColumns) names.push_back("body_" + body + "_" + c.suffix);
     return names;
 }
 
-std::string History::header() const {
-    std::string line;
-    for (const std::string& name : columnNames()) {
-        if (!line.empty()) line.push_back(',');
-        line.append(name);
-    }
-    line.push_back('\n');
-    return line;
-}
-
 void History::add(const State& state, const EnergyReport& energy,
-                  const std::vector<Vec3>& wallForces) {
+                  const std::vector<Vec3>& wallForces, const std::vector<Vec3>& contactForces) {
     if (wallForces.size() != walls_.size())
         throw std::logic_error("History::add: " + std::to_string(wallForces.size()) +
                                " wall forces for " + std::to_string(walls_.size()) + " walls");
@@ -134,31 +139,22 @@ void History::add(const State& state, const EnergyReport& energy,
         throw std::logic_error("History::add: the energy of " +
                                std::to_string(energy.bodies.size()) + " bodies for " +
                                std::to_string(bodies_.size()) + " bodies");
-    bool first = true;
-    const auto cell = [&](const char* format, double value) {
-        char text[64];
-        std::snprintf(text, sizeof text, format, value);
-        if (!first) text_ += ',';
-        text_ += text;
-        first = false;
-    };
+    const std::size_t bodies = bodies_.size();
+    if (contactForces.size() != (contact_ ? bodies * bodies : 0))
+        throw std::logic_error("History::add: " + std::to_string(contactForces.size()) +
+                               " contact forces for " + std::to_string(bodies) + " bodies");
+    const auto cell = [&](const char* format, double value) { table_.cell(format, value); };
     for (const HistoryColumn& c : kHistoryColumns) cell(c.format, c.value(state, energy));
     for (std::size_t w = 0; w < walls_.size(); ++w)
         for (const WallColumn& c : kWallColumns)
             cell(c.format, c.value(state, walls_[w], wallForces[w]));
+    if (contact_)
+        for (std::size_t i = 0; i < bodies; ++i)
+            for (std::size_t j = i + 1; j < bodies; ++j)
+                for (int d = 0; d < 3; ++d) cell("%.9e", contactForces[i * bodies + j][d]);
     for (const BodyEnergy& body : energy.bodies)
         for (const BodyColumn& c : kBodyColumns) cell(c.format, c.value(body));
-    text_ += '\n';
-}
-
-void History::restore(const std::string& text, const std::string& source) {
-    if (text.compare(0, header().size(), header()) != 0)
-        throw InputError(source + ": its history has other columns than this gsph-solve writes");
-    text_ = text;
-}
-
-void History::flush() const {
-    writeTextAtomically(path_, text_);
+    table_.endRow();
 }
 
 }  // namespace gsph::solver

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // history.csv of a run (docs/formats.md): rows at snapshots and history intervals, the columns
-// defined in three lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum),
-// kWallColumns (repeated for every wall, named wall_<name>_<suffix>) and kBodyColumns (repeated
-// for every body, named body_<name>_<suffix>) — adding a column is one line there and one line
-// in docs/formats.md. The whole table is rewritten atomically at every flush, and its text goes
-// into checkpoints so that a restarted run writes the same file as an uninterrupted one.
+// defined in lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum),
+// kWallColumns (repeated for every wall, named wall_<name>_<suffix>), kContactColumns (for every
+// pair of bodies in contact, contact_<name>_<name>_<suffix>) and kBodyColumns (repeated for every
+// body, named body_<name>_<suffix>) — adding a column is one line there and one line in
+// docs/formats.md. Written as a CsvTable (csv_table.hpp): rewritten atomically at every flush,
+// its text in checkpoints.
 #pragma once
 
 #include <filesystem>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "contact/walls.hpp"
+#include "csv_table.hpp"
 #include "integrator/energy.hpp"
 #include "particles/state.hpp"
 
@@ -25,32 +27,30 @@ class History {
   public:
     /// `bodies`: per body of the run (Simulation::bodies, in order), the name of its columns
     /// (its physical group's, or its id), which follow the walls'. `walls`: the run's walls, in
-    /// order, their columns after the run's. Throws InputError if two bodies' names make the
-    /// same columns.
+    /// order, their columns after the run's. `contactBetweenBodies`: the run has contact between
+    /// its bodies (contactBetweenBodies, contact/contact_stages.hpp): a force column per pair of
+    /// bodies, after the walls'. Throws InputError if two bodies' names make the same columns.
     History(std::filesystem::path path, const std::vector<std::string>& bodies,
-            std::vector<Wall> walls);
+            std::vector<Wall> walls, bool contactBetweenBodies);
 
     /// The column names, in the file's order.
     std::vector<std::string> columnNames() const;
 
     /// A row; `energy` has one entry per body (EnergyReport::bodies); `wallForces`: per wall,
-    /// its force on the bodies (RigidWalls::totalForces; empty if the run has no walls).
-    void add(const State& state, const EnergyReport& energy, const std::vector<Vec3>& wallForces);
-    /// Header and rows so far (what a checkpoint stores).
-    const std::string& text() const { return text_; }
-    /// Replaces the table by one a checkpoint stored. Throws InputError if its header is not
-    /// this run's.
-    void restore(const std::string& text, const std::string& source);
-    /// Writes the table to the path, atomically. Throws IoError on failure.
-    void flush() const;
+    /// its force on the bodies (RigidWalls::totalForces; empty if the run has no walls);
+    /// `contactForces`: per ordered pair of bodies, the force between them
+    /// (Simulation::contactForces; empty without contact between bodies).
+    void add(const State& state, const EnergyReport& energy, const std::vector<Vec3>& wallForces,
+             const std::vector<Vec3>& contactForces);
+    /// The table (its text, restore from a checkpoint, flush).
+    CsvTable& table() { return table_; }
+    const CsvTable& table() const { return table_; }
 
   private:
-    std::string header() const;
-
-    std::filesystem::path path_;
     std::vector<std::string> bodies_;  ///< column-safe names, in body order
     std::vector<Wall> walls_;
-    std::string text_;
+    bool contact_ = false;
+    CsvTable table_;
 };
 
 }  // namespace gsph::solver

@@ -17,6 +17,7 @@
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
 #include "io/snapshot.hpp"
+#include "probes.hpp"
 #include "progress.hpp"
 #include "reference/reference_builder.hpp"
 #include "signals.hpp"
@@ -206,17 +207,31 @@ std::vector<Wall> wallsOf(const CaseConfig& c) {
 // history.csv, checkpoint.h5, run.log, and the progress bar between them.
 class RunOutputs {
   public:
-    RunOutputs(const CaseConfig& c, const RunOptions& options, const Reference& ref,
-               const std::vector<std::string>& bodies, std::vector<CheckpointInput> inputs)
+    /// `bodies`: per body of the simulation, its name; `bodyNames`: per body id of the
+    /// particle file, its physical group's (probes name them).
+    RunOutputs(const CaseConfig& c, const RunOptions& options, const Simulation& sim,
+               const std::vector<std::string>& bodies, const std::vector<std::string>& bodyNames,
+               std::vector<CheckpointInput> inputs)
         : c_(c),
           options_(options),
           log_(*options.log),
-          ref_(ref),
+          ref_(sim.reference()),
           inputs_(std::move(inputs)),
           provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
-          history_(options.runDir / "history.csv", bodies, wallsOf(c)),
-          progress_(options.progress, c.endTime, ref.size()) {
+          history_(options.runDir / "history.csv", bodies, wallsOf(c),
+                   contactBetweenBodies(sim.options().contact, bodies.size())),
+          probes_(options.runDir / "probes.csv", findProbes(c, ref_, bodyNames)),
+          progress_(options.progress, c.endTime, ref_.size()) {
         log_.beforePrint = [this] { progress_.clear(); };
+        for (const Probe& p : probes_.probes()) {
+            const Vec3& X = ref_.X[static_cast<std::size_t>(p.particle)];
+            char line[320];
+            std::snprintf(line, sizeof line,
+                          "probe '%s': particle %d at X = (%.6g, %.6g, %.6g) m, %.3g m from its "
+                          "point",
+                          p.name.c_str(), p.particle, X[0], X[1], X[2], p.distance);
+            log_.add(line);
+        }
     }
     ~RunOutputs() { log_.beforePrint = nullptr; }  // the log outlives the progress bar
     RunOutputs(const RunOutputs&) = delete;
@@ -230,16 +245,16 @@ class RunOutputs {
     /// A history row and a snapshot of the simulation's state (a scheduled one, or the last
     /// of a stopped run).
     void snapshot(const Simulation& sim) {
-        const State& s = sim.state();
-        history_.add(s, sim.energy(), sim.wallForces());
-        writeSnapshotOnly(s);
+        addRow(sim);
+        writeSnapshotOnly(sim.state());
     }
     /// A snapshot without a history row (the failing state of a numerical breakdown).
     void writeSnapshotOnly(const State& s) {
         char name[64];
         std::snprintf(name, sizeof name, "snapshot_%06ld.h5", schedule.nextSnapshot++);
         writeSnapshot(options_.runDir / name, ref_, s, provenance_);
-        history_.flush();
+        history_.table().flush();
+        if (!probes_.empty()) probes_.table().flush();
         ++snapshots_;
         log_.add(std::string(name) + format(": t = %.6e s, step %ld", s.time, s.step));
         log_.flush();
@@ -255,7 +270,8 @@ class RunOutputs {
         // The intervals the counters count in: a restart with other intervals re-counts them.
         r.texts["output_interval"] = exactText(c_.outputInterval);
         r.texts["checkpoint_interval"] = exactText(c_.checkpointInterval);
-        r.texts["history"] = history_.text();
+        r.texts["history"] = history_.table().text();
+        if (!probes_.empty()) r.texts["probes"] = probes_.table().text();
         writeCheckpoint(checkpointPath(), s, r, provenance_);
         const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
         char line[160];
@@ -278,7 +294,13 @@ class RunOutputs {
         const auto text = run.texts.find("history");
         if (text == run.texts.end())
             throw InputError(file.string() + ": checkpoint lacks the history");
-        history_.restore(text->second, file.string());
+        history_.table().restore(text->second, file.string());
+        if (!probes_.empty()) {
+            const auto probeText = run.texts.find("probes");
+            if (probeText == run.texts.end())
+                throw InputError(file.string() + ": checkpoint lacks the probes");
+            probes_.table().restore(probeText->second, file.string());
+        }
         // Intervals changed on the command line (--output-interval, --checkpoint-interval):
         // the schedule goes on from the checkpoint's time in the new intervals.
         const auto firstPast = [&](double interval) { return firstMultiplePast(time, interval); };
@@ -309,7 +331,7 @@ class RunOutputs {
         const double tol = reachedTolerance();
         if (c_.historyInterval > 0.0 &&
             s.time >= static_cast<double>(schedule.nextHistory) * c_.historyInterval - tol) {
-            if (s.time < outputTarget - tol) history_.add(s, sim.energy(), sim.wallForces());
+            if (s.time < outputTarget - tol) addRow(sim);
             schedule.nextHistory = firstMultiplePast(s.time, c_.historyInterval);
         }
         if (c_.checkpointInterval <= 0.0 || s.time >= c_.endTime - tol) return;
@@ -336,6 +358,12 @@ class RunOutputs {
     }
 
   private:
+    /// A row of history.csv and of probes.csv.
+    void addRow(const Simulation& sim) {
+        history_.add(sim.state(), sim.energy(), sim.wallForces(), sim.contactForces());
+        if (!probes_.empty()) probes_.add(ref_, sim.state());
+    }
+
     const CaseConfig& c_;
     const RunOptions& options_;
     RunLog& log_;
@@ -343,6 +371,7 @@ class RunOutputs {
     std::vector<CheckpointInput> inputs_;
     Provenance provenance_;
     History history_;
+    Probes probes_;
     ProgressBar progress_;
     int snapshots_ = 0;
 };
@@ -434,7 +463,8 @@ std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& 
          it.increment(ec)) {
         const std::string name = it->path().filename().string();
         const bool snapshot = name.rfind("snapshot_", 0) == 0 && it->path().extension() == ".h5";
-        if (snapshot || name == kCheckpointName || name == "history.csv" || name == "run.log")
+        if (snapshot || name == kCheckpointName || name == "history.csv" || name == "probes.csv" ||
+            name == "run.log")
             out.push_back(it->path());
     }
     std::sort(out.begin(), out.end());
@@ -476,7 +506,9 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         options.log->add("removed " + std::to_string(stale) +
                          " temporary file(s) that an earlier, killed process left in " +
                          options.runDir.string());
-    RunOutputs out(c, options, ref, bodyNamesOf(file, sim), std::move(inputs));
+    std::vector<std::string> bodyNames;
+    for (const BodyInfo& b : file.bodies) bodyNames.push_back(b.name);
+    RunOutputs out(c, options, sim, bodyNamesOf(file, sim), bodyNames, std::move(inputs));
     options.log->add(sizeLine(ref));
     // From here on the run writes its folder: a signal stops it after a step, with a checkpoint.
     if (options.steppingStarts) options.steppingStarts();

@@ -55,7 +55,7 @@ struct RunSummary {
 /// Name of the rolling checkpoint in a run folder.
 inline constexpr const char* kCheckpointName = "checkpoint.h5";
 
-/// The files of an earlier run in a folder (snapshot_*.h5, checkpoint.h5, history.csv,
+/// The files of an earlier run in a folder (snapshot_*.h5, checkpoint.h5, history.csv, probes.csv,
 /// run.log), sorted; empty if the folder does not exist.
 std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& runDir);
 

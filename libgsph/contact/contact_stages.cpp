@@ -24,7 +24,7 @@ std::vector<std::unique_ptr<ForceStage>> makeContactStages(const Reference& ref,
                                                            const ContactOptions& options,
                                                            std::vector<Wall> walls) {
     std::vector<std::unique_ptr<ForceStage>> stages;
-    const bool pairs = options.betweenBodies && bodies > 1;
+    const bool pairs = contactBetweenBodies(options, bodies);
     if (!pairs && walls.empty()) return stages;
     const std::vector<double> k = contactStiffness(ref, pWaveSpeed2, options.penalty);
     ContactShapes shapes = contactShapes(ref, options.distance);

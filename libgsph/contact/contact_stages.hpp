@@ -23,6 +23,8 @@ class PairContactStage final : public ForceStage {
     std::string name() const override { return "contact between bodies"; }
     StageNeeds needs() const override { return {.frequency2 = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
+    /// Per ordered pair of bodies, the force between them: State::contactForce (history).
+    void record(State& state) const override { contact_.bodyPairForces(state.contactForce); }
     const PenaltyContact& contact() const { return contact_; }
 
   private:
@@ -46,6 +48,11 @@ class WallStage final : public ForceStage {
     RigidWalls walls_;
     std::vector<Vec3> particleForce_;
 };
+
+/// Whether a run of `bodies` bodies has contact between them (PairContactStage).
+inline bool contactBetweenBodies(const ContactOptions& options, std::size_t bodies) {
+    return options.betweenBodies && bodies > 1;
+}
 
 /// The contact stages a run needs, in their order (pair contact, then walls): none without
 /// walls and with a single body (or contact between bodies off). `pWaveSpeed2`: c_a² per

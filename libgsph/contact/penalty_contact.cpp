@@ -69,6 +69,11 @@ PenaltyContact::PenaltyContact(const Reference& ref, std::vector<double> stiffne
         ranges_.emplace_back(a, end);
         a = end;
     }
+    const Index largestId = *std::max_element(ref.body.begin(), ref.body.end());
+    rangeOfBody_.assign(static_cast<std::size_t>(largestId) + 1, 0);
+    for (std::size_t r = 0; r < ranges_.size(); ++r)
+        rangeOfBody_[static_cast<std::size_t>(
+            ref.body[static_cast<std::size_t>(ranges_[r].first)])] = r;
     boxLow_.resize(ranges_.size());
     boxHigh_.resize(ranges_.size());
     candidate_.resize(n);
@@ -78,6 +83,7 @@ PenaltyContact::PenaltyContact(const Reference& ref, std::vector<double> stiffne
     sorted_.resize(n);
     energy_.resize(n);
     pairCount_.resize(n);
+    forceByBody_.resize(n * ranges_.size());
 }
 
 std::size_t PenaltyContact::bucketOf(const Cell& c) const {
@@ -151,11 +157,14 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
     const Reference& ref = *ref_;
     const ContactShapes& shape = shapes_;
     const int zReach = ref.dim.value == 2 ? 0 : 1;
+    const std::size_t bodies = ranges_.size();
     parallelFor(ref.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         energy_[ia] = 0.0;
         pairCount_[ia] = 0;
         if (!candidate_[ia]) return;
+        Vec3* byBody = &forceByBody_[ia * bodies];
+        for (std::size_t j = 0; j < bodies; ++j) byBody[j].setZero();
         const Index body = ref.body[ia];
         const double ka = stiffness_[ia], ma = ref.mass[ia];
         Vec3 f = Vec3::Zero();
@@ -187,7 +196,9 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                         const double kb = stiffness_[ib];
                         const double kab = ka * kb / (ka + kb);        // springs in series
                         const Vec3 grad = n + (h - n.dot(h) * n) / r;  // −∂gap/∂x_a
-                        f += (kab * gap) * grad;
+                        const Vec3 fab = (kab * gap) * grad;
+                        f += fab;
+                        byBody[rangeOfBody_[static_cast<std::size_t>(ref.body[ib])]] += fab;
                         u += 0.25 * kab * gap * gap;  // half of the pair's ½ k gap²
                         // The spring's stiffness along −∂gap/∂x_a is k |∂gap/∂x_a|² (> k where
                         // the ellipsoids meet obliquely).
@@ -206,6 +217,18 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
     pairs_ = counted / 2;
     return deterministicSum(
         ref.size(), 0.0, [&](Index a) { return energy_[static_cast<std::size_t>(a)]; }, partial_);
+}
+
+void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
+    const std::size_t bodies = ranges_.size();
+    out.assign(bodies * bodies, Vec3::Zero());
+    for (std::size_t i = 0; i < bodies; ++i)
+        for (Index a = ranges_[i].first; a < ranges_[i].second; ++a) {
+            const auto ia = static_cast<std::size_t>(a);
+            if (!candidate_[ia]) continue;
+            for (std::size_t j = 0; j < bodies; ++j)
+                out[i * bodies + j] += forceByBody_[ia * bodies + j];
+        }
 }
 
 }  // namespace gsph

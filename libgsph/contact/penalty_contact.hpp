@@ -70,6 +70,14 @@ class PenaltyContact {
     /// Pairs in contact at the last addForces (a diagnostic; each pair counted once).
     long pairsInContact() const { return pairs_; }
 
+    /// Bodies in contact with each other: the runs of equal Reference::body in particle order.
+    std::size_t bodies() const { return ranges_.size(); }
+    /// Per ordered pair of bodies (i, j) (bodies in particle order), the force that j's
+    /// particles exert on i's at the last addForces [N], into out[i·B + j] (B = bodies();
+    /// out[i·B + i] = 0). Summed particle by particle in index order: independent of the thread
+    /// count, and out[i·B + j] = −out[j·B + i] to round-off (LS-DYNA's rcforc).
+    void bodyPairForces(std::vector<Vec3>& out) const;
+
   private:
     using Cell = std::array<std::int64_t, 3>;
     void markCandidates(const std::vector<Vec3>& x);
@@ -82,6 +90,7 @@ class PenaltyContact {
     std::vector<double> stiffness_;
     double cellSize_ = 0.0;
     std::vector<std::pair<Index, Index>> ranges_;  ///< per body: its particle range
+    std::vector<std::size_t> rangeOfBody_;         ///< per body id: its entry of ranges_
     std::vector<Vec3> boxLow_, boxHigh_;           ///< per body: bounding box grown by the reach
     std::vector<std::uint8_t> candidate_;          ///< per particle: within another body's box
     std::vector<Cell> cell_;                       ///< per particle
@@ -90,7 +99,9 @@ class PenaltyContact {
     std::vector<Index> sorted_;                    ///< particles, bucket by bucket, by index within
     std::vector<double> energy_;                   ///< per particle: half of each of its pairs' U
     std::vector<std::int32_t> pairCount_;          ///< per particle: its pairs in contact
-    std::vector<double> partial_;                  ///< scratch of deterministicSum
+    /// Per candidate particle a and body j: the force of j's particles on a (a·B + j) [N].
+    std::vector<Vec3> forceByBody_;
+    std::vector<double> partial_;  ///< scratch of deterministicSum
     long pairs_ = 0;
 };
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Checkpoint files (DESIGN §1): the whole State of a run, so that a restart continues it bit
 // for bit, plus what the run's driver needs to resume its own schedule. HDF5, format
-// "gsph-checkpoint" 2.0 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
+// "gsph-checkpoint" 3.0 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /state/NAME            every array of State::forEachArray (Vec3: N×3, Mat3: N×9 row-major,
 //                          double: N, uint8: per pair), stored exactly (no conversion)
@@ -28,8 +28,8 @@
 namespace gsph {
 
 inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
-/// 2.0: the plastic work per particle (/state/plastic_work) replaces the ledger's scalar.
-inline constexpr int kCheckpointFormatMajor = 2;
+/// 3.0: the contact force between each pair of bodies (/state/contact_force).
+inline constexpr int kCheckpointFormatMajor = 3;
 inline constexpr int kCheckpointFormatMinor = 0;
 
 /// A file the run was built from: a restart refuses to continue if its bytes changed.

@@ -61,6 +61,10 @@ struct State {
     /// Per rigid wall (in the order added), its total force on the bodies at the last force
     /// evaluation [N] (history rows; empty without walls).
     std::vector<Vec3> wallForce;
+    /// Per ordered pair of bodies (i, j), i·B + j over the B bodies in particle order, the force
+    /// of j's particles on i's through the contact between bodies at the last force evaluation
+    /// [N] (history rows; empty without contact between bodies).
+    std::vector<Vec3> contactForce;
     EnergyLedger ledger;
 
     /// Calls visit(name, array) for every array of the state (per particle, or per pair for
@@ -120,6 +124,7 @@ struct State {
         visit("plastic_work", s.plasticWork);
         visit("bond_intact", s.bondIntact);
         visit("wall_force", s.wallForce);
+        visit("contact_force", s.contactForce);
     }
 
   public:

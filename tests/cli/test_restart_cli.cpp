@@ -48,7 +48,8 @@ std::string readText(const fs::path& p) {
     return test::slurp(p);
 }
 
-// Every snapshot and the checkpoint of run A have a bytewise twin in run B; history.csv too.
+// Every snapshot and the checkpoint of run A have a bytewise twin in run B; history.csv and
+// probes.csv too.
 void expectSameOutputs(const fs::path& a, const fs::path& b, int minimumSnapshots) {
     int snapshots = 0;
     for (const auto& e : fs::directory_iterator(a)) {
@@ -62,6 +63,10 @@ void expectSameOutputs(const fs::path& a, const fs::path& b, int minimumSnapshot
     }
     EXPECT_GE(snapshots, minimumSnapshots);
     EXPECT_EQ(readText(a / "history.csv"), readText(b / "history.csv"));
+    EXPECT_EQ(fs::exists(a / "probes.csv"), fs::exists(b / "probes.csv"));
+    if (fs::exists(a / "probes.csv")) {
+        EXPECT_EQ(readText(a / "probes.csv"), readText(b / "probes.csv"));
+    }
 }
 
 class Restart : public ::testing::Test {
@@ -139,12 +144,21 @@ fixed = true
 [[set]]
 name = "load"
 velocity = [200.0, 0.0, 0.0]
+
+[[probe]]
+name = "middle"
+point = [0.05, 0.0, 0.0]
+
+[[probe]]
+name = "first"
+particle = 0
 )";
 
 TEST_F(Restart, JohnsonCookRunWithDamageAndBrokenBondsIsBitIdentical) {
     const fs::path caseFile = dir_ / "jc.toml";
     std::ofstream(caseFile) << kJohnsonCookCase;
     const State stopped = interruptAndRestart(caseFile, 100);
+    EXPECT_TRUE(fs::exists(dir_ / "B/probes.csv"));
     const auto broken = [](const std::vector<std::uint8_t>& intact) {
         return std::count(intact.begin(), intact.end(), std::uint8_t{0}) / 2;
     };

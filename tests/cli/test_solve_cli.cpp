@@ -4,6 +4,8 @@
 // good case runs, writes its files, balances its energy and conserves what it must.
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -11,6 +13,7 @@
 
 #include "io/particle_file.hpp"
 #include "io/snapshot.hpp"
+#include "materials/stress_measures.hpp"
 #include "support/csv.hpp"
 #include "support/h5_compare.hpp"
 #include "support/sample_run.hpp"
@@ -501,15 +504,17 @@ TEST(SolveCli, HistoryHasEachBodysEnergiesAndMomentum) {
     ASSERT_EQ(r.status, 0) << r.err;
     std::vector<std::string> header;
     const auto rows = readCsv(dir / "run" / "history.csv", header);
-    const std::size_t runColumns = 16, wallColumns = 6;
+    const std::size_t runColumns = 16, wallColumns = 6, contactColumns = 3;
     const std::vector<std::string> suffixes = {"kinetic_energy", "internal_energy", "plastic_work",
                                                "momentum_x",     "momentum_y",      "momentum_z"};
-    ASSERT_EQ(header.size(), runColumns + wallColumns + 2 * suffixes.size());
+    ASSERT_EQ(header.size(), runColumns + wallColumns + contactColumns + 2 * suffixes.size());
     EXPECT_EQ(header[runColumns], "wall_floor_fx");
+    EXPECT_EQ(header[runColumns + wallColumns], "contact_0_striker_1_fx");
+    EXPECT_EQ(header[runColumns + wallColumns + 2], "contact_0_striker_1_fz");
+    const std::size_t bodyColumns = runColumns + wallColumns + contactColumns;
     for (std::size_t k = 0; k < suffixes.size(); ++k) {
-        EXPECT_EQ(header[runColumns + wallColumns + k], "body_0_" + suffixes[k]);
-        EXPECT_EQ(header[runColumns + wallColumns + suffixes.size() + k],
-                  "body_striker_1_" + suffixes[k]);
+        EXPECT_EQ(header[bodyColumns + k], "body_0_" + suffixes[k]);
+        EXPECT_EQ(header[bodyColumns + suffixes.size() + k], "body_striker_1_" + suffixes[k]);
     }
     const auto col = [&](const std::string& name) {
         const auto it = std::find(header.begin(), header.end(), name);
@@ -549,6 +554,152 @@ TEST(SolveCli, HistoryHasEachBodysEnergiesAndMomentum) {
     EXPECT_EQ(last[col("body_striker_1_plastic_work")], 0.0);
     EXPECT_LT(last[col("body_striker_1_kinetic_energy")],
               first[col("body_striker_1_kinetic_energy")]);
+    // The contact force on the anvil (LS-DYNA's rcforc): none before the blocks meet (0.5 mm
+    // apart, beyond the contact distance), then downwards; the blow is centred, so it has no
+    // sideways part beyond round-off.
+    EXPECT_EQ(first[col("contact_0_striker_1_fz")], 0.0);
+    double strongest = 0.0, sideways = 0.0;
+    for (const auto& row : rows) {
+        EXPECT_LE(row[col("contact_0_striker_1_fz")], 0.0) << "at t = " << row[col("time")];
+        strongest = std::max(strongest, -row[col("contact_0_striker_1_fz")]);
+        sideways = std::max({sideways, std::abs(row[col("contact_0_striker_1_fx")]),
+                             std::abs(row[col("contact_0_striker_1_fy")])});
+    }
+    std::printf("[contact columns] largest push on the anvil %.4e N, sideways up to %.1e N\n",
+                strongest, sideways);
+    EXPECT_GT(strongest, 1e3);
+    EXPECT_LT(sideways, 1e-11 * strongest);  // measured 1.1e-12
+}
+
+// [[probe]] (LS-DYNA's nodout): probes.csv holds, at every history.csv row, the fields of the
+// probes' particles; the values at snapshot times are the snapshots' own. A point probe takes
+// the nearest particle (the striker's, 1.5 mm below the point; with body = "0" the anvil's,
+// √3 mm away, lowest index among four at that distance), an index probe its particle.
+TEST(SolveCli, ProbesWriteTheirParticlesFieldsAtEveryHistoryRow) {
+    TempDir dir;
+    const auto p = twoBlocks(
+        dir,
+        "Physical Volume(\"anvil\", 7) = {a[1]};\nPhysical Volume(\"striker\", 9) = {b[1]};\n");
+    ASSERT_EQ(p.status, 0) << p.err;
+    std::ofstream(dir / "probes.toml")
+        << "[run]\nparticles = \"particles.h5\"\nend_time = 1.2e-5\noutput_interval = 3.0e-6\n"
+           "history_interval = 5.0e-7\n"
+           "[[material]]\nname = \"copper\"\nfile = \"" +
+               (kSource / "materials/ofhc_copper.toml").string() +
+               "\"\n"
+               "[[body]]\ngroup = \"anvil\"\nmaterial = \"copper\"\n"
+               "[[body]]\ngroup = \"striker\"\nmaterial = \"copper\"\n"
+               "velocity = [0.0, 0.0, -150.0]\n"
+               "[[probe]]\nname = \"tip\"\npoint = [0.006, 0.006, 0.006]\n"
+               "[[probe]]\nname = \"anvil_top\"\npoint = [0.006, 0.006, 0.006]\n"
+               "body = \"anvil\"\n"
+               "[[probe]]\nname = \"corner\"\nparticle = 0\n";
+    const auto r =
+        runCommand(kSolve + " " + (dir / "probes.toml").string() + " -o " + (dir / "run").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string log = test::slurp(dir / "run" / "run.log");
+    EXPECT_NE(log.find("probe 'tip': particle "), std::string::npos) << log;
+    EXPECT_NE(log.find("0.0015 m from its point"), std::string::npos) << log;
+    std::vector<std::string> header, historyHeader;
+    const auto rows = readCsv(dir / "run" / "probes.csv", header);
+    const auto history = readCsv(dir / "run" / "history.csv", historyHeader);
+    const std::size_t fields = 24;
+    ASSERT_EQ(header.size(), 2 + 3 * fields);
+    EXPECT_EQ(header[2], "tip_x");
+    EXPECT_EQ(header[2 + fields], "anvil_top_x");
+    EXPECT_EQ(header[2 + 2 * fields + 18], "corner_von_mises");
+    // The same rows as history.csv.
+    ASSERT_EQ(rows.size(), history.size());
+    for (std::size_t i = 0; i < rows.size(); ++i) EXPECT_EQ(rows[i][0], history[i][0]);
+    const auto col = [&](const std::string& name) {
+        const auto it = std::find(header.begin(), header.end(), name);
+        EXPECT_NE(it, header.end()) << name;
+        return static_cast<std::size_t>(it - header.begin());
+    };
+    // The particles chosen, from the first row (x = X at t = 0).
+    const auto& first = rows.front();
+    EXPECT_NEAR(first[col("tip_z")], 0.0075, 1e-12);
+    EXPECT_EQ(first[col("tip_vz")], -150.0);
+    EXPECT_NEAR(first[col("anvil_top_x")], 0.005, 1e-12);
+    EXPECT_NEAR(first[col("anvil_top_y")], 0.005, 1e-12);
+    EXPECT_NEAR(first[col("anvil_top_z")], 0.005, 1e-12);
+    EXPECT_EQ(first[col("anvil_top_vz")], 0.0);
+    EXPECT_NEAR(first[col("corner_x")], 0.001, 1e-12);
+    // At each snapshot's time, the probes' values are the snapshot's, to the digits printed.
+    int matched = 0;
+    for (const auto& e : fs::directory_iterator(dir / "run")) {
+        if (e.path().filename().string().rfind("snapshot_", 0) != 0) continue;
+        const Snapshot snap = readSnapshot(e.path());
+        const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& rw) {
+            return std::abs(rw[0] - snap.time) <= 1e-9 * std::max(snap.time, 1e-12);
+        });
+        ASSERT_NE(row, rows.end()) << e.path();
+        for (const std::string probe : {"tip", "anvil_top", "corner"}) {
+            const auto near = [&](const std::string& column, double expected) {
+                EXPECT_NEAR((*row)[col(probe + "_" + column)], expected,
+                            5e-10 * std::abs(expected) + 1e-300)
+                    << probe << "_" << column << " at t = " << snap.time;
+            };
+            // The probe's particle: the one at its x with its displacement.
+            std::size_t a = 0;
+            for (; a < snap.x.size(); ++a)
+                if ((snap.x[a] - Vec3((*row)[col(probe + "_x")], (*row)[col(probe + "_y")],
+                                      (*row)[col(probe + "_z")]))
+                            .norm() < 1e-9 &&
+                    (snap.x[a] - snap.X[a] -
+                     Vec3((*row)[col(probe + "_ux")], (*row)[col(probe + "_uy")],
+                          (*row)[col(probe + "_uz")]))
+                            .norm() < 1e-9)
+                    break;
+            ASSERT_LT(a, snap.x.size()) << probe << " at t = " << snap.time;
+            near("vz", snap.v[a][2]);
+            near("stress_zz", snap.stress[a](2, 2));
+            near("stress_xy", snap.stress[a](0, 1));
+            near("von_mises", vonMises(snap.stress[a]));
+            near("pressure", -snap.stress[a].trace() / 3.0);
+            near("J", snap.F[a].determinant());
+            near("plastic_strain", snap.plasticStrain[a]);
+            near("temperature", snap.temperature[a]);
+        }
+        ++matched;
+    }
+    EXPECT_EQ(matched, 5);
+    // The blow reached the anvil's top: it moved down and flowed.
+    const auto& last = rows.back();
+    EXPECT_LT(last[col("anvil_top_uz")], 0.0);
+    EXPECT_GT(last[col("anvil_top_plastic_strain")], 0.0);
+}
+
+// A probe that names no particle of the run is refused before the run starts, naming the line.
+TEST(SolveCli, ABadProbeIsRefusedNamingItsLine) {
+    TempDir dir;
+    const auto p = test::makeSampleParticles(dir / "particles.h5");
+    ASSERT_EQ(p.status, 0) << p.err;
+    const std::string base =
+        "[run]\nparticles = \"particles.h5\"\nend_time = 1.0e-6\n"
+        "[[material]]\nname = \"steel\"\ndensity = 7850.0\n"
+        "youngs_modulus = 200.0e9\npoisson_ratio = 0.3\n"
+        "[[body]]\ngroup = \"bar\"\nmaterial = \"steel\"\n";
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"[[probe]]\nname = \"p\"\nparticle = 100000\n",
+         "probes.toml:12: [[probe]] 'p': particle 100000 is not in"},
+        {"[[probe]]\nname = \"p\"\npoint = [0.0, 0.0, 0.0]\nbody = \"ball\"\n",
+         "probes.toml:12: [[probe]] 'p': body 'ball' is not a body of"},
+        {"[[probe]]\nname = \"p q\"\nparticle = 1\n",
+         "probes.toml:13: [[probe]] name 'p q' must be letters, digits and '_'"},
+        {"[[probe]]\nname = \"p\"\nparticle = 1\npoint = [0.0, 0.0, 0.0]\n",
+         "probes.toml:12: [[probe]] 'p' needs either 'point' or 'particle' (not both)"},
+        {"[[probe]]\nname = \"p\"\nparticle = 1\n[[probe]]\nname = \"p\"\nparticle = 2\n",
+         "probes.toml:15: [[probe]] 'p' is given twice (also at line 12)"},
+    };
+    for (const auto& [probe, message] : cases) {
+        std::ofstream(dir / "probes.toml") << base + probe;
+        const auto r = runCommand(kSolve + " " + (dir / "probes.toml").string() + " -o " +
+                                  (dir / "run").string() + " --overwrite");
+        EXPECT_EQ(r.status, 1) << probe;
+        EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
 }
 
 // Two bodies whose names make the same columns (body_ball_1_…) are refused before the run

@@ -15,6 +15,7 @@
 #include "io/checkpoint.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/contact_fixtures.hpp"
 #include "support/johnson_cook_materials.hpp"
 #include "support/lattice_fixtures.hpp"
 #include "tools/temp_dir.hpp"
@@ -166,6 +167,40 @@ TEST(Checkpoint, ResumedPrecrackedSimulationStepsBitIdentically) {
     EXPECT_EQ(differences(resumed->state(), a->state()), "");
     EXPECT_GT(initial, 0);
     EXPECT_GT(brokenEntries(a->state()), initial);
+}
+
+// Two bodies in contact: the contact forces between them are state too (the history reports
+// them), and a resumed run steps bit-identically through the collision.
+TEST(Checkpoint, ResumedContactSimulationStepsBitIdentically) {
+    const auto makeBlocks = [] {
+        using testing::Box;
+        const Material steel = HypoElastic(ElasticConstants(7800.0, 200e9, 0.3));
+        SolverOptions options;
+        options.viscosity = {1.0, 1.0};
+        auto sim = std::make_unique<Simulation>(
+            testing::boxBodies({Box{Vec3::Zero(), Vec3(0.008, 0.006, 0.006), {8, 6, 6}},
+                                Box{Vec3(0.008, 0.0, 0.0), Vec3(0.006, 0.006, 0.006), {6, 6, 6}}}),
+            std::vector<Material>{steel, steel}, options);
+        const Reference& ref = sim->reference();
+        std::vector<Vec3> v(static_cast<std::size_t>(ref.size()));
+        for (std::size_t a = 0; a < v.size(); ++a)
+            v[a] = Vec3(ref.body[a] == 0 ? 30.0 : -30.0, 0.0, 0.0);
+        sim->setVelocities(v);
+        return sim;
+    };
+    const auto a = makeBlocks();
+    for (int i = 0; i < 60; ++i) a->step();
+    const auto b = makeBlocks();
+    for (int i = 0; i < 25; ++i) b->step();
+    ASSERT_EQ(b->state().contactForce.size(), 4u);
+    EXPECT_GT(b->state().contactForce[1].norm(), 0.0) << "in contact at the checkpoint";
+    test::TempDir dir;
+    writeCheckpoint(dir / "c.h5", b->state(), {}, {});
+    const auto resumed = makeBlocks();
+    resumed->resume(readCheckpoint(dir / "c.h5").state, "c.h5");
+    EXPECT_EQ(resumed->contactForces(), b->contactForces());
+    for (int i = 0; i < 35; ++i) resumed->step();
+    EXPECT_EQ(differences(resumed->state(), a->state()), "");
 }
 
 TEST(Checkpoint, ResumeRefusesAStateOfAnotherShape) {

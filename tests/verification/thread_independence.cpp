@@ -164,6 +164,8 @@ TEST(ThreadIndependence, ContactRunsAreBitIdenticalToo) {
     EXPECT_TRUE(bitIdentical(s1.x, s2.x));
     EXPECT_TRUE(bitIdentical(s1.v, s2.v));
     EXPECT_TRUE(bitIdentical(s1.cauchy, s2.cauchy));
+    EXPECT_TRUE(bitIdentical(s1.contactForce, s2.contactForce));
+    EXPECT_EQ(s1.contactForce.size(), 4u);
     EXPECT_EQ(std::memcmp(&s1.time, &s2.time, sizeof(double)), 0);
     EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
     EXPECT_GT(e1.contactEnergy, 0.0);

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: MIT
+// probes.csv of a run (docs/formats.md, LS-DYNA's nodout): for each [[probe]] particle, its
+// fields at every history.csv row. The columns are time, step, then <probe>_<field> for every
+// probe and every entry of kProbeFields (probes.cpp: adding a field is one line there and one
+// in docs/formats.md). Written as a CsvTable (csv_table.hpp).
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "case_config.hpp"
+#include "csv_table.hpp"
+#include "particles/reference.hpp"
+#include "particles/state.hpp"
+
+namespace gsph::solver {
+
+/// A probe: its name and the particle it follows.
+struct Probe {
+    std::string name;
+    Index particle = 0;
+    double distance = 0.0;  ///< from the [[probe]] point to the particle's X [m] (0 by index)
+};
+
+/// The particle of each [[probe]]: by index, or the nearest to its point in the reference
+/// configuration (among the particles of its body, if it names one: a physical group or a body
+/// id, `bodyNames` per body id). Throws InputError "CASE:LINE: ..." for an index beyond the
+/// particles or an unknown body.
+std::vector<Probe> findProbes(const CaseConfig& c, const Reference& ref,
+                              const std::vector<std::string>& bodyNames);
+
+class Probes {
+  public:
+    Probes(std::filesystem::path path, std::vector<Probe> probes);
+    bool empty() const { return probes_.empty(); }
+    const std::vector<Probe>& probes() const { return probes_; }
+    /// The column names, in the file's order.
+    std::vector<std::string> columnNames() const;
+    /// A row of every probe's fields at the state.
+    void add(const Reference& ref, const State& state);
+    CsvTable& table() { return table_; }
+    const CsvTable& table() const { return table_; }
+
+  private:
+    std::vector<Probe> probes_;
+    CsvTable table_;
+};
+
+}  // namespace gsph::solver
