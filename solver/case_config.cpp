@@ -256,10 +256,9 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
                 r.fail("failed_bonds",
                        "'failed_bonds' must be \"keep\", \"either\", \"both\" or \"cut\", got \"" +
                            b.failedBonds + "\"");
-            const auto* plastic = std::get_if<JohnsonCook>(&*material->material);
-            if (b.failedBonds != "keep" && (plastic == nullptr || !plastic->damage()))
+            if (b.failedBonds != "keep" && damageModel(*material->material) == nullptr)
                 r.fail("failed_bonds",
-                       "'failed_bonds' needs a johnson_cook material with damage; material '" +
+                       "'failed_bonds' needs a plastic material with damage; material '" +
                            b.material + "' has none");
             for (const BodySpec& other : c.bodies)
                 if (other.group == b.group)

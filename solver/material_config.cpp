@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 
 #include "core/error.hpp"
 #include "toml_keys.hpp"
@@ -18,21 +19,98 @@ using Keys = std::vector<std::string>;
 // a source for every constant) and have no effect on the run.
 const Keys kCommonKeys = {"model",        "density", "youngs_modulus", "poisson_ratio",
                           "bond_stretch", "notes",   "sources"};
-const Keys kJohnsonCookKeys = {"yield_stress",
-                               "hardening_modulus",
-                               "hardening_exponent",
-                               "strain_rate_coefficient",
-                               "reference_strain_rate",
-                               "thermal_softening_exponent",
-                               "room_temperature",
-                               "melting_temperature",
-                               "specific_heat",
-                               "taylor_quinney",
-                               "strain_rate_form",
-                               "damage",
-                               "eos"};
-const Keys kLinearEosKeys = {"bulk_modulus"};
-const Keys kMieGruneisenKeys = {"sound_speed", "hugoniot_slope", "gruneisen_gamma"};
+// Keys of a plastic solid besides its strength model's: the parts it composes
+// (libgsph/materials/plastic_solid.hpp).
+const Keys kPlasticPartKeys = {"eos", "damage"};
+
+JohnsonCookParams readJohnsonCook(const TomlKeys& keys, const std::string& where);
+LinearHardeningParams readLinearHardening(const TomlKeys& keys, const std::string& where);
+
+// A material model of `model = "NAME"`: its constants' keys and how it is built from them. A
+// plastic model composes its strength with an equation of state (`eos`, kEquationsOfState) and
+// an optional damage model (`damage`). The keys a material may have, and the hint for a key of
+// another model, follow from these lists: adding a model is one entry here and its reader.
+// The parts a model is built from, besides its own constants (read by `build`).
+struct ModelParts {
+    const TomlKeys& keys;
+    std::string where;  ///< "[[material]]" or "material 'NAME'", for messages of its keys
+    std::string name;   ///< the material's name
+    ElasticConstants elastic;
+    /// A plastic model's equation of state, built when called (its keys and checks then fail
+    /// inside the model's `located`, as the model's own checks do).
+    std::function<EquationOfState()> eos;
+    std::optional<JohnsonCookDamage> damage;
+};
+
+// Builds a model from constants already read: an InputError of its checks (or of its equation
+// of state's) names the material.
+template <class Make>
+Material located(const ModelParts& parts, Make&& make) {
+    try {
+        return make();
+    } catch (const InputError& e) {
+        parts.keys.fail("", std::string(e.what()) + " in material '" + parts.name + "'");
+    }
+}
+
+struct ModelReader {
+    const char* name;
+    Keys keys;
+    bool plastic;
+    Material (*build)(const ModelParts& parts);
+};
+
+const ModelReader kModels[] = {
+    {"elastic", {}, false, [](const ModelParts& p) -> Material { return HypoElastic(p.elastic); }},
+    {"johnson_cook",
+     {"yield_stress", "hardening_modulus", "hardening_exponent", "strain_rate_coefficient",
+      "reference_strain_rate", "thermal_softening_exponent", "room_temperature",
+      "melting_temperature", "specific_heat", "taylor_quinney", "strain_rate_form"},
+     true,
+     [](const ModelParts& p) {
+         const JohnsonCookParams params = readJohnsonCook(p.keys, p.where);
+         return located(p, [&] { return JohnsonCook(p.elastic, params, p.eos(), p.damage); });
+     }},
+    {"linear_hardening",
+     {"yield_stress", "hardening_modulus", "room_temperature", "specific_heat", "taylor_quinney",
+      "reference_strain_rate"},
+     true,
+     [](const ModelParts& p) {
+         const LinearHardeningParams params = readLinearHardening(p.keys, p.where);
+         return located(p, [&] { return LinearHardening(p.elastic, params, p.eos(), p.damage); });
+     }},
+};
+
+// An equation of state of a plastic model, `eos = "NAME"` (libgsph/materials/eos.hpp).
+struct EosReader {
+    const char* name;
+    Keys keys;
+    EquationOfState (*build)(const TomlKeys& keys, const ElasticConstants& e);
+};
+
+const EosReader kEquationsOfState[] = {
+    {"linear",
+     {"bulk_modulus"},
+     [](const TomlKeys& keys, const ElasticConstants& e) {
+         return EquationOfState::linear(
+             e.density, keys.number("bulk_modulus", e.bulkModulus(), Sign::Positive));
+     }},
+    {"mie_gruneisen",
+     {"sound_speed", "hugoniot_slope", "gruneisen_gamma"},
+     [](const TomlKeys& keys, const ElasticConstants& e) {
+         return EquationOfState::mieGruneisen(e.density,
+                                              {keys.number("sound_speed", Sign::Positive),
+                                               keys.number("hugoniot_slope", Sign::NonNegative),
+                                               keys.number("gruneisen_gamma", Sign::NonNegative)});
+     }},
+};
+
+template <class Reader, std::size_t N>
+std::string namesOf(const Reader (&readers)[N]) {
+    std::string names;
+    for (const Reader& r : readers) names += (names.empty() ? "" : ", ") + std::string(r.name);
+    return names;
+}
 
 std::string shortNumber(double v) {
     char text[32];
@@ -51,9 +129,13 @@ Keys operator+(Keys a, const Keys& b) {
 
 // Where a key that the chosen model or equation of state does not take belongs instead.
 std::string belongsTo(const std::string& key) {
-    if (contains(kJohnsonCookKeys, key)) return "(it belongs to model = \"johnson_cook\")";
-    if (contains(kLinearEosKeys, key)) return "(it belongs to eos = \"linear\")";
-    if (contains(kMieGruneisenKeys, key)) return "(it belongs to eos = \"mie_gruneisen\")";
+    std::string models;
+    for (const ModelReader& m : kModels)
+        if (contains(m.keys, key) || (m.plastic && contains(kPlasticPartKeys, key)))
+            models += (models.empty() ? "\"" : " or \"") + std::string(m.name) + "\"";
+    if (!models.empty()) return "(it belongs to model = " + models + ")";
+    for (const EosReader& e : kEquationsOfState)
+        if (contains(e.keys, key)) return "(it belongs to eos = \"" + std::string(e.name) + "\")";
     return "";
 }
 
@@ -103,22 +185,42 @@ JohnsonCookParams readJohnsonCook(const TomlKeys& keys, const std::string& where
     return p;
 }
 
+LinearHardeningParams readLinearHardening(const TomlKeys& keys, const std::string& where) {
+    LinearHardeningParams p;
+    p.yieldStress = keys.number("yield_stress", Sign::NonNegative);
+    p.hardeningModulus = keys.number("hardening_modulus", Sign::NonNegative);
+    p.roomTemperature = keys.number("room_temperature", p.roomTemperature, Sign::Positive);
+    p.specificHeat = keys.number("specific_heat", p.specificHeat, Sign::NonNegative);
+    p.taylorQuinney = keys.number("taylor_quinney", p.taylorQuinney, Sign::NonNegative);
+    if (p.taylorQuinney > 1.0)
+        keys.fail("taylor_quinney", "'taylor_quinney' in " + where + " must lie in [0, 1]");
+    if (p.taylorQuinney > 0.0 && !(p.specificHeat > 0.0))
+        keys.fail("specific_heat", "'taylor_quinney' > 0 in " + where +
+                                       " heats the material: give specific_heat > 0");
+    p.referenceStrainRate =
+        keys.number("reference_strain_rate", p.referenceStrainRate, Sign::Positive);
+    return p;
+}
+
 // The constants of one material, from an inline [[material]] table or a material file.
 void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& extraKeys,
                    const std::string& where, MaterialSpec& m) {
     m.model = keys.text("model", "elastic");
-    if (m.model != "elastic" && m.model != "johnson_cook")
+    const ModelReader* model = nullptr;
+    for (const ModelReader& candidate : kModels)
+        if (m.model == candidate.name) model = &candidate;
+    if (!model)
         keys.fail("model", "material model '" + m.model +
-                               "' is not known (available: elastic, johnson_cook)");
-    const bool plastic = m.model == "johnson_cook";
-    const std::string eos = plastic ? keys.text("eos", "linear") : "";
-    if (plastic && eos != "linear" && eos != "mie_gruneisen")
-        keys.fail("eos", "equation of state '" + eos +
-                             "' is not known (available: linear, mie_gruneisen)");
+                               "' is not known (available: " + namesOf(kModels) + ")");
+    const std::string eosName = model->plastic ? keys.text("eos", "linear") : "";
+    const EosReader* eos = nullptr;
+    for (const EosReader& candidate : kEquationsOfState)
+        if (eosName == candidate.name) eos = &candidate;
+    if (model->plastic && !eos)
+        keys.fail("eos", "equation of state '" + eosName +
+                             "' is not known (available: " + namesOf(kEquationsOfState) + ")");
     const Keys constants =
-        kCommonKeys +
-        (plastic ? kJohnsonCookKeys + (eos == "linear" ? kLinearEosKeys : kMieGruneisenKeys)
-                 : Keys{});
+        kCommonKeys + model->keys + (model->plastic ? kPlasticPartKeys + eos->keys : Keys{});
     keys.rejectUnknown(constants + extraKeys, belongsTo);
     checkSources(keys, table, constants);
     if (keys.has("notes")) keys.text("notes", "");
@@ -132,29 +234,15 @@ void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& e
         keys.fail("poisson_ratio", std::string(e.what()) + " in material '" + m.name + "'");
     }
     m.bondStretch = keys.number("bond_stretch", 0.0, Sign::NonNegative);
-    if (!plastic) {
-        m.material = HypoElastic(m.elastic);
-        return;
+    ModelParts parts{keys, where, m.name, m.elastic, {}, std::nullopt};
+    if (model->plastic) {
+        if (keys.has("damage")) {
+            const std::vector<double> d = keys.numbers("damage", 5);
+            parts.damage = JohnsonCookDamage{{d[0], d[1], d[2], d[3], d[4]}};
+        }
+        parts.eos = [&keys, eos, &m] { return eos->build(keys, m.elastic); };
     }
-    const JohnsonCookParams params = readJohnsonCook(keys, where);
-    std::optional<JohnsonCookDamage> damage;
-    if (keys.has("damage")) {
-        const std::vector<double> d = keys.numbers("damage", 5);
-        damage = JohnsonCookDamage{{d[0], d[1], d[2], d[3], d[4]}};
-    }
-    try {
-        const EquationOfState state =
-            eos == "linear"
-                ? EquationOfState::linear(
-                      rho, keys.number("bulk_modulus", m.elastic.bulkModulus(), Sign::Positive))
-                : EquationOfState::mieGruneisen(
-                      rho, {keys.number("sound_speed", Sign::Positive),
-                            keys.number("hugoniot_slope", Sign::NonNegative),
-                            keys.number("gruneisen_gamma", Sign::NonNegative)});
-        m.material = JohnsonCook(m.elastic, params, state, damage);
-    } catch (const InputError& e) {
-        keys.fail("", std::string(e.what()) + " in material '" + m.name + "'");
-    }
+    m.material = model->build(parts);
 }
 
 }  // namespace

@@ -24,7 +24,7 @@ namespace gsph::solver {
 
 struct MaterialSpec {
     std::string name;
-    std::string model;                 ///< "elastic" or "johnson_cook"
+    std::string model;                 ///< "elastic", "johnson_cook" or "linear_hardening"
     ElasticConstants elastic;          ///< ρ0, E, ν (every model)
     std::optional<Material> material;  ///< the model, built and validated by the parser
     /// εmax of brittle bond failure by stretch (DESIGN §5, key `bond_stretch`); 0 = no bonds break.

@@ -20,6 +20,11 @@ class InputError : public Error {
     using Error::Error;
 };
 
+/// Throws InputError "what, got VALUE" unless `ok`: the check of a model's constant.
+inline void requireConstant(bool ok, const std::string& what, double value) {
+    if (!ok) throw InputError(what + ", got " + std::to_string(value));
+}
+
 /// A mesh that cannot become particles (not hex, not structured, inverted, empty).
 class MeshError : public Error {
   public:

@@ -22,7 +22,7 @@
 // damage (State::damage, FailedBondRule per particle): with Either, the bond of a pair (a, b)
 // breaks for good once a or b has failed (D ≥ 1); with Both, once a and b have. Both sides
 // evaluate the same rule from the same damages, so they agree as for the stretch. A failed
-// particle carries no deviatoric stress and no tension (materials/johnson_cook.hpp), but its
+// particle carries no deviatoric stress and no tension (materials/plastic_solid.hpp), but its
 // bonds still tie the two sides of a shear band together. With Either it loses every bond and
 // is detached: it keeps its mass and momentum, meets other bodies through contact, and no longer
 // ties the pieces together. With Both, a band of failed particles at least two wide cuts the

@@ -2,7 +2,7 @@
 // Hypo-elastic material with the Jaumann objective rate (DESIGN §5, paper Eq. CauchyTensor):
 //   σ̇ = C : D + W σ − σ W,   C : D = λ tr(D) I + 2G D,   D = sym L, W = skew L, L = Ḟ F^{-1}.
 //
-// The material interface every strength model follows (materials/johnson_cook.hpp too):
+// The material interface every model follows (materials/plastic_solid.hpp too):
 //   static constexpr bool kTracksHistory;                   // reads/writes ε̄p, T, D, e
 //   void update(MaterialPoint&, const Mat3& D, const Mat3& W, double dt) const;
 //   double waveSpeed(const MaterialPoint&) const;           // for the time step and viscosity

@@ -5,7 +5,7 @@
 // homologous temperature of the strength model. The rate term is the paper's power form
 // (Børvik et al.); Johnson & Cook's original 1 + D4 ln ε̇* agrees with it to first order in
 // D4 ln ε̇*. The strength model accumulates D and couples it to the yield stress, (1 − D)σy;
-// a point with D ≥ 1 has failed: no deviatoric stress and no tension (materials/johnson_cook.hpp).
+// a point with D ≥ 1 has failed: no deviatoric stress and no tension (materials/plastic_solid.hpp).
 #pragma once
 
 #include <algorithm>

@@ -1,16 +1,18 @@
 // SPDX-License-Identifier: MIT
-// The set of strength models, held by value per body and dispatched once per body with
-// std::visit (never per particle). Adding a model = adding it to this variant.
+// The set of material models, held by value per body and dispatched once per body with
+// std::visit (never per particle): elastic, and the plastic solids (materials/plastic_solid.hpp)
+// of each strength model. Adding a model = adding it to this variant.
 #pragma once
 
 #include <variant>
 
 #include "materials/hypoelastic.hpp"
 #include "materials/johnson_cook.hpp"
+#include "materials/linear_hardening.hpp"
 
 namespace gsph {
 
-using Material = std::variant<HypoElastic, JohnsonCook>;
+using Material = std::variant<HypoElastic, JohnsonCook, LinearHardening>;
 
 inline const ElasticConstants& elasticConstants(const Material& m) {
     return std::visit([](const auto& model) -> const ElasticConstants& { return model.elastic(); },
@@ -20,6 +22,18 @@ inline const ElasticConstants& elasticConstants(const Material& m) {
 /// True for models that carry a history (plastic strain, temperature, damage, energy).
 inline bool tracksHistory(const Material& m) {
     return std::visit([](const auto& model) { return model.kTracksHistory; }, m);
+}
+
+/// The damage model of a material (Johnson–Cook damage of a plastic solid), if it has one.
+inline const JohnsonCookDamage* damageModel(const Material& m) {
+    return std::visit(
+        [](const auto& model) -> const JohnsonCookDamage* {
+            if constexpr (requires { model.damage(); })
+                return model.damage() ? &*model.damage() : nullptr;
+            else
+                return nullptr;
+        },
+        m);
 }
 
 /// The temperature a body of this material starts at: the model's room temperature (Johnson–

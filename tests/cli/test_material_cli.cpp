@@ -55,12 +55,12 @@ TEST(MaterialLibrary, EveryFileParsesAndCitesASourceForEveryConstant) {
 TEST(MaterialLibrary, FilesHoldTheIssueConstants) {
     const solver::MaterialSpec cu = solver::readMaterialFile(kLibrary / "ofhc_copper.toml");
     const auto& copper = std::get<JohnsonCook>(*cu.material);
-    EXPECT_EQ(copper.params().yieldStress, 90e6);
-    EXPECT_EQ(copper.params().hardeningModulus, 292e6);
-    EXPECT_EQ(copper.params().hardeningExponent, 0.31);
-    EXPECT_EQ(copper.params().strainRateCoefficient, 0.025);
-    EXPECT_EQ(copper.params().thermalSofteningExponent, 1.09);
-    EXPECT_EQ(copper.params().meltingTemperature, 1356.0);
+    EXPECT_EQ(copper.strength().params().yieldStress, 90e6);
+    EXPECT_EQ(copper.strength().params().hardeningModulus, 292e6);
+    EXPECT_EQ(copper.strength().params().hardeningExponent, 0.31);
+    EXPECT_EQ(copper.strength().params().strainRateCoefficient, 0.025);
+    EXPECT_EQ(copper.strength().params().thermalSofteningExponent, 1.09);
+    EXPECT_EQ(copper.strength().params().meltingTemperature, 1356.0);
     EXPECT_EQ(cu.elastic.density, 8960.0);
     EXPECT_EQ(cu.elastic.youngsModulus, 124e9);
     EXPECT_EQ(copper.eos().kind(), EquationOfState::Kind::MieGruneisen);
@@ -162,6 +162,57 @@ TEST(MaterialPointCli, CopperInUniaxialStressFollowsTheClosedForm) {
     }
     EXPECT_GT(checked, 90);
     EXPECT_GT(rows.back()[11], 600.0) << "adiabatic heating";
+}
+
+// A linear-hardening steel written as a user would (model = "linear_hardening", the Mie–
+// Grüneisen equation of state composed with it) through the material-point driver: past yield
+// σ_xx = σ0 + H ε̄p at each row's ε̄p (the return uses ε̄p of the increment before: within one
+// increment's H Δε̄p, 20 % margin for the increments' spread), isothermal without χ. A Johnson–Cook
+// key in it is refused with a hint.
+TEST(MaterialPointCli, LinearHardeningSteelFollowsItsBilinearLine) {
+    TempDir dir;
+    const std::string steel =
+        "model = \"linear_hardening\"\ndensity = 7850.0\nyoungs_modulus = 200.0e9\n"
+        "poisson_ratio = 0.3\nyield_stress = 350.0e6\nhardening_modulus = 1.5e9\n"
+        "eos = \"mie_gruneisen\"\nsound_speed = 4570.0\nhugoniot_slope = 1.49\n"
+        "gruneisen_gamma = 1.93\n";
+    write(dir / "steel.toml", steel);
+    const solver::MaterialSpec spec = solver::readMaterialFile(dir / "steel.toml");
+    const auto& model = std::get<LinearHardening>(*spec.material);
+    EXPECT_EQ(model.strength().params().yieldStress, 350e6);
+    EXPECT_EQ(model.strength().params().hardeningModulus, 1.5e9);
+    EXPECT_EQ(model.eos().kind(), EquationOfState::Kind::MieGruneisen);
+    const auto r = runCommand(kSolve + " --material-point " + (dir / "steel.toml").string() +
+                              " --path " + (kLibrary / "paths/uniaxial_stress_1e3.toml").string() +
+                              " -o " + (dir / "steel.csv").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(dir / "steel.csv", header);
+    ASSERT_EQ(header[2], "sigma_xx");
+    ASSERT_EQ(header[10], "plastic_strain");
+    int checked = 0;
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        if (rows[i - 1][10] <= 0.0) continue;
+        // Rows are 50 increments apart (output_every): one increment's Δε̄p is a 50th of theirs.
+        const double increment = (rows[i][10] - rows[i - 1][10]) / 50.0;
+        EXPECT_NEAR(rows[i][2], 350e6 + 1.5e9 * rows[i][10],
+                    1.2 * 1.5e9 * increment + 1e-9 * rows[i][2])
+            << "ε̄p " << rows[i][10];
+        EXPECT_EQ(rows[i][11], 293.15) << "isothermal without taylor_quinney";
+        ++checked;
+    }
+    EXPECT_GT(checked, 50);
+    write(dir / "bad.toml", steel + "hardening_exponent = 0.3\n");
+    try {
+        solver::readMaterialFile(dir / "bad.toml");
+        ADD_FAILURE() << "a Johnson–Cook key in a linear-hardening material was accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(
+                      "bad.toml:11: unknown key 'hardening_exponent' in material 'bad' (it "
+                      "belongs to model = \"johnson_cook\")"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 TEST(MaterialPointCli, BadPathFilesGetOneLineMessages) {

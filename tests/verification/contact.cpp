@@ -128,26 +128,40 @@ TEST(Contact, ElasticBarKeepsItsReboundWithTheDefaultViscosity) {
     EXPECT_LT(defaults.viscous, 0.005);
 }
 
-// Block A (1 mm cells, steel) at +v/2 hits block B (1.5 mm cells, a softer, lighter metal) at
-// −v/2. The lattices do not line up across the contact face.
+// Block A (1 mm cells, steel) at vA hits block B (1.5 mm cells, a softer, lighter metal) at vB.
+// The lattices do not line up across the contact face.
+struct TwoBlocks {
+    static inline const ElasticConstants steel{7800.0, 200e9, 0.3}, alloy{2700.0, 70e9, 0.33};
+    static inline const Box a{Vec3::Zero(), Vec3(0.008, 0.006, 0.006), {8, 6, 6}, steel.density};
+    static inline const Box b{
+        Vec3(0.008, -0.0015, -0.0015), Vec3(0.009, 0.009, 0.009), {6, 6, 6}, alloy.density};
+    SolverOptions options;
+    std::unique_ptr<Simulation> sim;
+    TwoBlocks(const Vec3& vA, const Vec3& vB) {
+        options.viscosity = {0.5, 0.5};
+        options.hourglass = 0.1;
+        sim = std::make_unique<Simulation>(
+            boxBodies({a, b}), std::vector<Material>{HypoElastic(steel), HypoElastic(alloy)},
+            options);
+        const Reference& ref = sim->reference();
+        std::vector<Vec3> v0(static_cast<std::size_t>(ref.size()));
+        for (std::size_t p = 0; p < v0.size(); ++p) v0[p] = ref.body[p] == 0 ? vA : vB;
+        sim->setVelocities(v0);
+        sim->start();
+    }
+};
+
 TEST(Contact, TwoBlocksConserveMomentumAndDoNotInterpenetrate) {
     const double vRel = 40.0;
-    const ElasticConstants steel(7800.0, 200e9, 0.3), alloy(2700.0, 70e9, 0.33);
-    SolverOptions options;
-    options.viscosity = {0.5, 0.5};
-    options.hourglass = 0.1;
-    const Box a{Vec3::Zero(), Vec3(0.008, 0.006, 0.006), {8, 6, 6}, steel.density};
-    const Box b{Vec3(0.008, -0.0015, -0.0015), Vec3(0.009, 0.009, 0.009), {6, 6, 6}, alloy.density};
-    Simulation sim(boxBodies({a, b}), {HypoElastic(steel), HypoElastic(alloy)}, options);
+    const ElasticConstants &steel = TwoBlocks::steel, &alloy = TwoBlocks::alloy;
+    const Box& a = TwoBlocks::a;
+    TwoBlocks blocks(Vec3(0.5 * vRel, 0.0, 0.0), Vec3(-0.5 * vRel, 0.0, 0.0));
+    const SolverOptions& options = blocks.options;
+    Simulation& sim = *blocks.sim;
     const Reference& ref = sim.reference();
-    std::vector<Vec3> v0(static_cast<std::size_t>(ref.size()));
-    for (std::size_t p = 0; p < v0.size(); ++p)
-        v0[p] = Vec3(ref.body[p] == 0 ? 0.5 * vRel : -0.5 * vRel, 0.0, 0.0);
-    sim.setVelocities(v0);
-    sim.start();
     const EnergyReport e0 = sim.energy();
     double scale = 0.0;  // Σ m|v|
-    for (std::size_t p = 0; p < v0.size(); ++p) scale += ref.mass[p] * v0[p].norm();
+    for (std::size_t p = 0; p < ref.X.size(); ++p) scale += ref.mass[p] * sim.state().v[p].norm();
     double worstMomentum = 0.0, smallest = 1e300, worstEnergy = 0.0, faceOverlap = 0.0;
     long maxPairs = 0;
     // Until the blocks have separated again (the steel block's transit time sets the scale).
@@ -197,19 +211,8 @@ TEST(Contact, TwoBlocksConserveMomentumAndDoNotInterpenetrate) {
 // internal forces cancel, so the trapezoid of the reported forces over the steps must equal
 // each body's momentum change to round-off, and the two bodies' forces are opposite.
 TEST(Contact, ContactForceBetweenBodiesIsTheRateOfEachBodysMomentum) {
-    const ElasticConstants steel(7800.0, 200e9, 0.3), alloy(2700.0, 70e9, 0.33);
-    SolverOptions options;
-    options.viscosity = {0.5, 0.5};
-    options.hourglass = 0.1;
-    const Box a{Vec3::Zero(), Vec3(0.008, 0.006, 0.006), {8, 6, 6}, steel.density};
-    const Box b{Vec3(0.008, -0.0015, -0.0015), Vec3(0.009, 0.009, 0.009), {6, 6, 6}, alloy.density};
-    Simulation sim(boxBodies({a, b}), {HypoElastic(steel), HypoElastic(alloy)}, options);
-    const Reference& ref = sim.reference();
-    std::vector<Vec3> v0(static_cast<std::size_t>(ref.size()));
-    for (std::size_t p = 0; p < v0.size(); ++p)
-        v0[p] = Vec3(ref.body[p] == 0 ? 20.0 : -20.0, ref.body[p] == 0 ? 3.0 : 0.0, 0.0);
-    sim.setVelocities(v0);
-    sim.start();
+    TwoBlocks blocks(Vec3(20.0, 3.0, 0.0), Vec3(-20.0, 0.0, 0.0));
+    Simulation& sim = *blocks.sim;
     ASSERT_EQ(sim.contactForces().size(), 4u);
     const Vec3 p0 = sim.energy().bodies[0].momentum;
     Vec3 impulse = Vec3::Zero(), before = sim.contactForces()[1];

@@ -176,7 +176,7 @@ TEST(JohnsonCook, DamageWithHeatingMatchesTheIntegralOfTheFailureStrain) {
         driveMaterialPoint(model, compact(LoadingPath::Kind::UniaxialStress, rate, 1.6, 16000));
     const auto ef = [&](double T) {
         return (0.0705 + 1.732 * std::exp(-0.54 / 3.0)) * std::pow(1.0 + rate, -0.015) *
-               (1.0 + d5 * model.homologousTemperature(T));
+               (1.0 + d5 * model.strength().homologousTemperature(T));
     };
     double integral = 0.0;
     bool failed = false;
