@@ -5,9 +5,14 @@
 // particle and the time per phase.
 //
 // Usage:   gsph-bench [--cells N] [--steps S] [--kappa K] [--no-viscosity] [--no-hourglass]
-//                     [--johnson-cook] [--contact] [--lanes W]
+//                     [--johnson-cook] [--contact | --ogrid] [--lanes W]
 // --contact: the cube as two bodies (a slab of its first 20 % in z driven at 50 m/s into the
 // rest), so the step also runs the contact search and the penalty forces between them.
+// --ogrid: instead of the cube, the O-grid cylinder of geometries/taylor_bar.geo (a Cartesian
+// core and a cylindrical annulus, coupled by the overset band; converted in-process as
+// gsph-preproc converts it), R = 3.8 mm, N/4 core cells a side, N/8 annulus cells across and
+// 5N layers 0.3 mm long (N = --cells), moving at 50 m/s onto a rigid wall at its end face: the
+// Taylor sample's workload, curved spaces, the band and a wall included.
 // Sample:  gsph-bench --cells 46 --steps 100      (≈ 1e5 particles)
 //          gsph-bench --cells 100 --steps 20      (1e6 particles)
 // Threads: OMP_NUM_THREADS.
@@ -20,7 +25,10 @@
 #include <fstream>
 #include <string>
 
+#include "conversion.hpp"
 #include "core/lanes.hpp"
+#include "gmsh_input.hpp"
+#include "reference/reference_builder.hpp"
 #include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
 #include "support/contact_fixtures.hpp"
@@ -43,6 +51,26 @@ long peakResidentBytes() {
     return 0;
 }
 
+// The --ogrid layout (see above), read as gsph-solve reads a particle file.
+gsph::Reference ogridReference(int cells, double kappa, std::string& layout) {
+    using namespace gsph;
+    const int n = std::max(2, cells / 4), nr = std::max(2, cells / 8), nz = 5 * cells;
+    const double length = 0.3e-3 * nz;
+    std::vector<std::string> warnings;
+    const preproc::HexMesh mesh = preproc::readHexMesh(
+        std::string(GSPH_SOURCE_DIR) + "/geometries/taylor_bar.geo",
+        preproc::MeshReadOptions{
+            {{"n", n}, {"nr", nr}, {"nz", nz}, {"L", length}, {"grading", 1.0}}},
+        warnings);
+    const preproc::Conversion c = preproc::convertHexMesh(mesh, {});
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "O-grid cylinder R = 3.8 mm, L = %.1f mm: %d×%d core + %d×%d annulus, %d layers",
+                  length * 1e3, n, n, 4 * n, nr, nz);
+    layout = text;
+    return buildReference(c.particles, std::vector<double>{7800.0}, kappa);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -61,8 +89,13 @@ int main(int argc, char** argv) {
     app.add_flag("--johnson-cook", plastic,
                  "Johnson–Cook steel with damage (Weldox 460E constants) instead of elastic steel");
     bool contact = false;
-    app.add_flag("--contact", contact,
-                 "two bodies in contact (slab driven into the rest of the cube)");
+    auto* contactFlag = app.add_flag(
+        "--contact", contact, "two bodies in contact (slab driven into the rest of the cube)");
+    bool ogrid = false;
+    app.add_flag("--ogrid", ogrid,
+                 "the O-grid cylinder of taylor_bar.geo (core + annulus + overset band) moving "
+                 "onto a rigid wall, instead of the cube")
+        ->excludes(contactFlag);
     int lanes = 8;
     app.add_option("--lanes", lanes,
                    "widest strip of the stencil kernels: 2 (SSE2), 4 (AVX2), 8 (AVX-512F; default: "
@@ -79,8 +112,13 @@ int main(int argc, char** argv) {
     if (!noHourglass) options.hourglass = 0.1;
     const double L = 0.1;  // a 10 cm steel cube
     const int slab = cells / 5;
+    std::string layout;
+    char cube[80];
+    std::snprintf(cube, sizeof cube, "%d³ cube", cells);
+    layout = cube;
     Reference ref =
-        contact
+        ogrid ? ogridReference(cells, kappa, layout)
+        : contact
             ? testing::boxBodies(
                   {testing::Box{Vec3::Zero(), Vec3(L, L, slab * L / cells), {cells, cells, slab}},
                    testing::Box{Vec3(0, 0, slab * L / cells),
@@ -98,9 +136,15 @@ int main(int argc, char** argv) {
     std::vector<Material> materials = {material};
     if (contact) materials.push_back(material);
     Simulation sim(std::move(ref), materials, options);
-    // A compression wave from an impact on one face: every term of the step is active.
-    const double v = contact ? 50.0 : -50.0;
-    sim.setVelocity([&](const Vec3& X) { return Vec3(0.0, 0.0, X[2] < 0.2 * L ? v : 0.0); });
+    if (ogrid) {
+        // The whole bar onto a wall at its end face z = 0 (Taylor test).
+        sim.addWall({"wall", Vec3::Zero(), Vec3::UnitZ()});
+        sim.setVelocity([&](const Vec3&) { return Vec3(0.0, 0.0, -50.0); });
+    } else {
+        // A compression wave from an impact on one face: every term of the step is active.
+        const double v = contact ? 50.0 : -50.0;
+        sim.setVelocity([&](const Vec3& X) { return Vec3(0.0, 0.0, X[2] < 0.2 * L ? v : 0.0); });
+    }
     sim.start();
     const double setupSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
@@ -118,8 +162,11 @@ int main(int argc, char** argv) {
     const PhaseTimes& ph = sim.integrator().phaseTimes();
     const double rate = n * steps / seconds;
     const int threads = omp_get_max_threads();
-    std::printf("particles            %.0f (%d³), %.1f neighbours per particle, κ = %.2f\n", n,
-                cells, pairs / n, kappa);
+    std::size_t band = 0;
+    for (Index a = 0; a < sim.reference().size(); ++a) band += sim.reference().inOversetBand(a);
+    std::printf("particles            %.0f (%s), %.1f neighbours per particle, κ = %.2f\n", n,
+                layout.c_str(), pairs / n, kappa);
+    std::printf("overset band         %zu particles (%.1f %%)\n", band, 100.0 * band / n);
     std::printf("threads              %d\n", threads);
     std::printf("material             %s\n",
                 plastic ? "Johnson–Cook + damage (Weldox 460E)" : "hypo-elastic steel");
@@ -128,7 +175,9 @@ int main(int argc, char** argv) {
                 noHourglass ? "off" : "on");
     const auto* pairContact = sim.integrator().stage<PairContactStage>();
     std::printf("contact              %s (%ld pairs in contact at the end)\n",
-                contact ? "two bodies" : "off",
+                contact ? "two bodies"
+                : ogrid ? "a rigid wall"
+                        : "off",
                 pairContact ? pairContact->contact().pairsInContact() : 0L);
     std::printf("setup                %.2f s (pairs, metric, first forces)\n", setupSeconds);
     std::printf("steps                %d in %.3f s\n", steps, seconds);
