@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The one parallel seam of the library (style habit 6).
 // - parallelFor(n, body): body(i) for i in [0, n), OpenMP static schedule (parallelForBlocks:
-//   dynamic chunks of blocks). Each i must write
+//   ranges of equal cost). Each i must write
 //   only its own entries (gather, never scatter), so results do not depend on the thread count.
 // - deterministicSum(n, term): Σ term(i) summed in fixed chunks and a fixed order, so the
 //   result is bit-identical for any thread count (an OpenMP reduction would not be). The
 //   overload with a `partial` scratch vector does not allocate once that has grown.
 #pragma once
+
+#include <omp.h>
 
 #include <algorithm>
 #include <cstddef>
@@ -26,18 +28,29 @@ inline void parallelFor(std::ptrdiff_t n, Body&& body) {
     for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
 }
 
-/// parallelFor over n blocks of consecutive items, `work` items in all (the particle blocks of
-/// neighbors/stencil_blocks.hpp): the threshold applies to the items, not to the blocks (4096
-/// blocks are some 1e5 particles, far beyond the point where two threads pay off). Blocks
-/// differ in cost (a stencil strip against the CSR particles of an overset band, several times
-/// dearer), so threads take them in dynamic chunks of 64 blocks: on the O-grid workload 2
-/// threads went from 1.41× to 1.89× one thread, the uniform cube stayed within 1 %
-/// (docs/performance.md). Each block writes only its own entries: the schedule never changes
-/// a result.
+/// body(i) for the blocks i of a sweep whose costs run up as `cost` (size blocks + 1, cost[0] =
+/// 0: StencilBlocks::cost), each thread taking one contiguous range of equal cost. Blocks differ
+/// in cost (a stencil strip against the CSR particles of an overset band, several times
+/// dearer): an even split of the blocks left one thread idle for a third of an O-grid sweep. The
+/// ranges depend only on the costs and the thread count, so the stress update and the force
+/// loop give each thread the same particles (they stay in its cache). Below
+/// kParallelThreshold of cost the sweep runs on the calling thread. Each block writes only its
+/// own entries: the split never changes a result.
 template <class Body>
-inline void parallelForBlocks(std::ptrdiff_t n, std::ptrdiff_t work, Body&& body) {
-#pragma omp parallel for schedule(dynamic, 64) if (work >= kParallelThreshold)
-    for (std::ptrdiff_t i = 0; i < n; ++i) body(i);
+inline void parallelForBlocks(const std::vector<std::ptrdiff_t>& cost, Body&& body) {
+    const auto n = static_cast<std::ptrdiff_t>(cost.size()) - 1;
+    if (n <= 0) return;
+    const std::ptrdiff_t total = cost.back();
+#pragma omp parallel if (total >= kParallelThreshold)
+    {
+        const std::ptrdiff_t threads = omp_get_num_threads(), t = omp_get_thread_num();
+        const auto at = [&](std::ptrdiff_t share) {
+            return std::lower_bound(cost.begin(), cost.end() - 1, total * share / threads) -
+                   cost.begin();
+        };
+        const std::ptrdiff_t end = t + 1 == threads ? n : at(t + 1);
+        for (std::ptrdiff_t i = at(t); i < end; ++i) body(i);
+    }
 }
 
 /// Chunk size of deterministicSum; fixed so that the summation order never changes.

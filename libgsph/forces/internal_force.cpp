@@ -279,24 +279,22 @@ void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& 
                const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
                std::vector<Vec3>& force, ForceParts& parts) {
     const int width = laneWidth();
-    const Index work = blocks.particles;
-    parallelForBlocks(
-        static_cast<std::ptrdiff_t>(blocks.blocks.size()), work, [&](std::ptrdiff_t k) {
-            const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
-            if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
-                const Stencil& st = blocks.stencils[static_cast<std::size_t>(block.stencil)];
-                if (width >= 8 && block.size() >= 8)
-                    avx512BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
-                else if (width >= 4)
-                    avx2BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
-                else
-                    portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
-                return;
-            }
-            for (Index i = 0; i < block.size(); ++i)
-                csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, block.particle(i),
-                                                     force, parts);
-        });
+    parallelForBlocks(blocks.cost, [&](std::ptrdiff_t k) {
+        const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
+        if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
+            const Stencil& st = blocks.stencils[static_cast<std::size_t>(block.stencil)];
+            if (width >= 8 && block.size() >= 8)
+                avx512BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+            else if (width >= 4)
+                avx2BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+            else
+                portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+            return;
+        }
+        for (Index i = 0; i < block.size(); ++i)
+            csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, block.particle(i), force,
+                                                 parts);
+    });
 }
 
 }  // namespace

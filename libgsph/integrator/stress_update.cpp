@@ -211,11 +211,9 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
         const StencilBlocks& blocks = blocks_[b];
         std::visit(
             [&](const auto& model) {
-                parallelForBlocks(static_cast<std::ptrdiff_t>(blocks.blocks.size()),
-                                  bodies_[b].end - bodies_[b].begin, [&](std::ptrdiff_t k) {
-                                      updateBlock(model, s, blocks,
-                                                  blocks.blocks[static_cast<std::size_t>(k)]);
-                                  });
+                parallelForBlocks(blocks.cost, [&](std::ptrdiff_t k) {
+                    updateBlock(model, s, blocks, blocks.blocks[static_cast<std::size_t>(k)]);
+                });
             },
             *bodies_[b].material);
     }

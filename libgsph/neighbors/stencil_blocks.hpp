@@ -65,6 +65,10 @@ struct StencilBlocks {
     std::vector<Stencil> stencils;
     std::vector<ParticleBlock> blocks;
     Index particles = 0;  ///< in all blocks (the body's particle count)
+    /// Running total of the blocks' cost, in stencil particles (size blocks + 1, from 0): a CSR
+    /// particle costs 4 (3.6× a stencil one, measured on the O-grid: docs/performance.md). The
+    /// block loops split it evenly among threads (parallelForBlocks, core/parallel.hpp).
+    std::vector<std::ptrdiff_t> cost;
     std::size_t bytes() const;
 };
 
