@@ -196,6 +196,10 @@ ProbeSpec readProbe(const std::string& file, const toml::table& t) {
 
 }  // namespace
 
+bool namesBody(const std::string& group, const ParticleFile& file, std::size_t id) {
+    return group == file.bodies[id].name || group == std::to_string(id);
+}
+
 CaseConfig readCaseFile(const std::filesystem::path& path) {
     const std::string file = path.string();
     if (!std::filesystem::exists(path)) throw InputError(file + ": no such case file");

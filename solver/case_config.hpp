@@ -11,6 +11,7 @@
 
 #include "core/types.hpp"
 #include "forces/artificial_viscosity.hpp"
+#include "io/particle_file.hpp"
 #include "material_config.hpp"      // MaterialSpec: [[material]] tables and material files
 #include "particles/reference.hpp"  // MassBasis
 
@@ -118,6 +119,10 @@ struct CaseConfig {
     std::vector<PrecrackSpec> precracks;
     std::vector<ProbeSpec> probes;
 };
+
+/// Whether `group` (a [[body]] group, a [[probe]] body) names body `id` of `file`: its physical
+/// group's name, or its id as text.
+bool namesBody(const std::string& group, const ParticleFile& file, std::size_t id);
 
 /// Parses and validates a case file. Throws InputError "FILE:LINE: ..." on any fault.
 CaseConfig readCaseFile(const std::filesystem::path& path);

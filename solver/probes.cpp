@@ -57,8 +57,7 @@ const ProbeField kProbeFields[] = {
 
 }  // namespace
 
-std::vector<Probe> findProbes(const CaseConfig& c, const Reference& ref,
-                              const std::vector<std::string>& bodyNames) {
+std::vector<Probe> findProbes(const CaseConfig& c, const Reference& ref, const ParticleFile& file) {
     std::vector<Probe> probes;
     for (const ProbeSpec& spec : c.probes) {
         const std::string at = c.caseFile.string() + ":" + std::to_string(spec.line) + ": ";
@@ -75,9 +74,8 @@ std::vector<Probe> findProbes(const CaseConfig& c, const Reference& ref,
         }
         Index body = -1;
         if (!spec.body.empty()) {
-            for (std::size_t b = 0; b < bodyNames.size() && body < 0; ++b)
-                if (spec.body == bodyNames[b] || spec.body == std::to_string(b))
-                    body = static_cast<Index>(b);
+            for (std::size_t b = 0; b < file.bodies.size() && body < 0; ++b)
+                if (namesBody(spec.body, file, b)) body = static_cast<Index>(b);
             if (body < 0)
                 throw InputError(at + "[[probe]] '" + spec.name + "': body '" + spec.body +
                                  "' is not a body of " + c.particles.string());

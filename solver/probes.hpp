@@ -24,11 +24,9 @@ struct Probe {
 };
 
 /// The particle of each [[probe]]: by index, or the nearest to its point in the reference
-/// configuration (among the particles of its body, if it names one: a physical group or a body
-/// id, `bodyNames` per body id). Throws InputError "CASE:LINE: ..." for an index beyond the
-/// particles or an unknown body.
-std::vector<Probe> findProbes(const CaseConfig& c, const Reference& ref,
-                              const std::vector<std::string>& bodyNames);
+/// configuration (among the particles of its body, if it names one of `file`'s: namesBody).
+/// Throws InputError "CASE:LINE: ..." for an index beyond the particles or an unknown body.
+std::vector<Probe> findProbes(const CaseConfig& c, const Reference& ref, const ParticleFile& file);
 
 class Probes {
   public:

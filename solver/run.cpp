@@ -41,7 +41,7 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
     for (const BodySpec& s : c.bodies) {
         bool found = false;
         for (std::size_t b = 0; b < file.bodies.size(); ++b)
-            found = found || s.group == file.bodies[b].name || s.group == std::to_string(b);
+            found = found || namesBody(s.group, file, b);
         if (!found)
             throw InputError(c.caseFile.string() + ":" + std::to_string(s.line) +
                              ": [[body]] group '" + s.group + "' is not a body of " +
@@ -52,7 +52,7 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         const BodyInfo& info = file.bodies[b];
         const BodySpec* spec = nullptr;
         for (const BodySpec& s : c.bodies)
-            if (s.group == info.name || s.group == std::to_string(b)) {
+            if (namesBody(s.group, file, b)) {
                 if (spec)
                     throw InputError(c.caseFile.string() + ":" + std::to_string(s.line) +
                                      ": [[body]] group '" + s.group + "' names body " +
@@ -207,20 +207,18 @@ std::vector<Wall> wallsOf(const CaseConfig& c) {
 // history.csv, checkpoint.h5, run.log, and the progress bar between them.
 class RunOutputs {
   public:
-    /// `bodies`: per body of the simulation, its name; `bodyNames`: per body id of the
-    /// particle file, its physical group's (probes name them).
+    /// `file`: the run's particle file (its bodies' names for the columns and the probes).
     RunOutputs(const CaseConfig& c, const RunOptions& options, const Simulation& sim,
-               const std::vector<std::string>& bodies, const std::vector<std::string>& bodyNames,
-               std::vector<CheckpointInput> inputs)
+               const ParticleFile& file, std::vector<CheckpointInput> inputs)
         : c_(c),
           options_(options),
           log_(*options.log),
           ref_(sim.reference()),
           inputs_(std::move(inputs)),
           provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
-          history_(options.runDir / "history.csv", bodies, wallsOf(c),
-                   contactBetweenBodies(sim.options().contact, bodies.size())),
-          probes_(options.runDir / "probes.csv", findProbes(c, ref_, bodyNames)),
+          history_(options.runDir / "history.csv", bodyNamesOf(file, sim), wallsOf(c),
+                   contactBetweenBodies(sim.options().contact, sim.bodies().size())),
+          probes_(options.runDir / "probes.csv", findProbes(c, ref_, file)),
           progress_(options.progress, c.endTime, ref_.size()) {
         log_.beforePrint = [this] { progress_.clear(); };
         for (const Probe& p : probes_.probes()) {
@@ -506,9 +504,7 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         options.log->add("removed " + std::to_string(stale) +
                          " temporary file(s) that an earlier, killed process left in " +
                          options.runDir.string());
-    std::vector<std::string> bodyNames;
-    for (const BodyInfo& b : file.bodies) bodyNames.push_back(b.name);
-    RunOutputs out(c, options, sim, bodyNamesOf(file, sim), bodyNames, std::move(inputs));
+    RunOutputs out(c, options, sim, file, std::move(inputs));
     options.log->add(sizeLine(ref));
     // From here on the run writes its folder: a signal stops it after a step, with a checkpoint.
     if (options.steppingStarts) options.steppingStarts();

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The one parallel seam of the library (style habit 6).
 // - parallelFor(n, body): body(i) for i in [0, n), OpenMP static schedule (parallelForBlocks:
-//   ranges of equal cost). Each i must write
-//   only its own entries (gather, never scatter), so results do not depend on the thread count.
+//   ranges of equal cost). Each i must write only its own entries (gather, never scatter), so
+//   results do not depend on the thread count.
 // - deterministicSum(n, term): Σ term(i) summed in fixed chunks and a fixed order, so the
 //   result is bit-identical for any thread count (an OpenMP reduction would not be). The
 //   overload with a `partial` scratch vector does not allocate once that has grown.
