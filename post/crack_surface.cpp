@@ -360,7 +360,7 @@ Index CrackSurfaces::facetOf(Index a, Index b) const {
 
 CrackSurface CrackSurfaces::surface(const Snapshot& s) const {
     if (static_cast<std::size_t>(s.size()) != particles_)
-        throw InputError("snapshot at t = " + std::to_string(s.time) + " has " +
+        throw InputError("snapshot at t = " + std::to_string(s.state.time) + " has " +
                          std::to_string(s.size()) + " particles, the run's first has " +
                          std::to_string(particles_));
     const auto m = static_cast<std::ptrdiff_t>(s.brokenBonds.size());
@@ -404,9 +404,9 @@ CrackSurface CrackSurfaces::surface(const Snapshot& s) const {
             const auto a =
                 static_cast<std::size_t>(ghost ? ghostSource_[static_cast<std::size_t>(k - n)] : k);
             const Vec3 p = ghost ? ghostPosition_[static_cast<std::size_t>(k - n)] : s.X[a];
-            xMean += s.x[a] + s.F[a] * (p - s.X[a]);
+            xMean += s.state.x[a] + s.state.F[a] * (p - s.X[a]);
             pMean += p;
-            FMean += s.F[a];
+            FMean += s.state.F[a];
         }
         out.points[static_cast<std::size_t>(i)] =
             0.25 * xMean + 0.25 * FMean * (voronoiPosition_[v] - 0.25 * pMean);

@@ -220,8 +220,8 @@ double HexSolid::referenceVolume() const {
 
 double HexSolid::particleVolume(const Snapshot& s) const {
     double total = 0.0;
-    for (std::size_t a = 0; a < volume_.size() && a < s.F.size(); ++a)
-        total += volume_[a] * s.F[a].determinant();
+    for (std::size_t a = 0; a < volume_.size() && a < s.state.F.size(); ++a)
+        total += volume_[a] * s.state.F[a].determinant();
     return total;
 }
 
@@ -237,7 +237,7 @@ std::vector<Vec3> HexSolid::currentNodes(const SolidPiece& piece, const Snapshot
         const auto a = static_cast<std::size_t>(piece.particle[h]);
         for (const Index node : piece.hexes[h]) {
             const auto i = static_cast<std::size_t>(node);
-            x[i] += s.x[a] + s.F[a] * (piece.nodeX[i] - s.X[a]);
+            x[i] += s.state.x[a] + s.state.F[a] * (piece.nodeX[i] - s.X[a]);
         }
     }
     for (std::size_t i = 0; i < x.size(); ++i) x[i] /= piece.cellsAround[i];

@@ -179,7 +179,7 @@ void renderPictures(const std::vector<std::string>& pictured, bool final, const 
             out / (final ? "final_" + field + ".png"
                          : field + "_" + stem.substr(std::string("snapshot_").size()) + ".png");
         gsph::post::renderSnapshot(snap, field, picture, size[0], size[1], run.solid.get());
-        std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.time);
+        std::printf("gsph-post: picture %s (t = %.6g s)\n", picture.c_str(), snap.state.time);
     }
     const fs::path historyCsv = runDir / "history.csv";
     if (!fs::exists(historyCsv)) return;
@@ -284,12 +284,12 @@ int main(int argc, char** argv) {
             const std::string vtu = stem + ".vtu";
             if (k == 0 && !noSolid) solid = loadSolid(runDir, particlesOption, snap.X);
             gsph::post::writeVtu(out / vtu, snap, solid.labels);
-            series.emplace_back(snap.time, vtu);
+            series.emplace_back(snap.state.time, vtu);
             if (solid.solid) {
                 const std::string vtm =
                     "solid_" + stem.substr(std::string("snapshot_").size()) + ".vtm";
                 gsph::post::writeSolid(out / vtm, *solid.solid, snap, solid.labels);
-                solidSeries.emplace_back(snap.time, vtm);
+                solidSeries.emplace_back(snap.state.time, vtm);
             }
             if (cracksPossible) {
                 gsph::post::CrackSurface surface;
@@ -316,14 +316,14 @@ int main(int argc, char** argv) {
                     const std::string vtp =
                         "crack_" + stem.substr(std::string("snapshot_").size()) + ".vtp";
                     gsph::post::writeVtp(out / vtp, surface);
-                    crackSeries.emplace_back(snap.time, vtp);
+                    crackSeries.emplace_back(snap.state.time, vtp);
                     crackArea = surface.totalReferenceArea();
                     crackProjected = surface.totalProjectedArea();
                     crackPolygons = surface.polygons();
                     unmatched = surface.brokenBondsWithoutFacet;
                 }
             }
-            snapshotTimes.push_back(snap.time);
+            snapshotTimes.push_back(snap.state.time);
             last = std::move(snap);
         }
         gsph::post::writePvd(out / "run.pvd", series);

@@ -136,12 +136,12 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
     for (vtkIdType a = 0; a < n; ++a) {
         const auto i = static_cast<std::size_t>(a);
-        points->InsertNextPoint(s.x[i].data());
+        points->InsertNextPoint(s.state.x[i].data());
         vertices->InsertNextCell(1, &a);
         values->InsertNextValue(scalarField(s, i, field));
-        radius->InsertNextValue(0.5 * std::cbrt(s.volume[i] * s.F[i].determinant()));
-        lo = lo.cwiseMin(s.x[i]);
-        hi = hi.cwiseMax(s.x[i]);
+        radius->InsertNextValue(0.5 * std::cbrt(s.volume[i] * s.state.F[i].determinant()));
+        lo = lo.cwiseMin(s.state.x[i]);
+        hi = hi.cwiseMax(s.state.x[i]);
     }
     vtkNew<vtkPolyData> cloud;
     cloud->SetPoints(points);
@@ -234,7 +234,8 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     bar->SetLabelFormat("%.3g");
     vtkNew<vtkTextActor> title;
     char text[128];
-    std::snprintf(text, sizeof text, "t = %.4g s   (%d particles%s)", s.time, static_cast<int>(n),
+    std::snprintf(text, sizeof text, "t = %.4g s   (%d particles%s)", s.state.time,
+                  static_cast<int>(n),
                   solid == nullptr ? "" : (cut ? ", solid cut at mid-y" : ", solid"));
     title->SetInput(text);
     title->GetTextProperty()->SetFontSize(22);

@@ -83,7 +83,7 @@ constexpr const char* kDerivedScalars[] = {"von_mises", "pressure", "displacemen
 const std::vector<std::string>& scalarFieldNames() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> out(std::begin(kDerivedScalars), std::end(kDerivedScalars));
-        Snapshot().forEachField([&](const SnapshotField& field, const auto& array) {
+        Snapshot().forEachField([&](const Field& field, const auto& array) {
             using T = typename std::decay_t<decltype(array)>::value_type;
             if (field.vtuName != nullptr && !std::is_same_v<T, Mat3>) out.push_back(field.vtuName);
         });
@@ -99,12 +99,12 @@ bool isScalarField(const std::string& name) {
 }
 
 double scalarField(const Snapshot& s, std::size_t a, const std::string& name) {
-    if (name == "von_mises") return vonMises(s.stress[a]);
-    if (name == "pressure") return pressure(s.stress[a]);
-    if (name == "displacement") return (s.x[a] - s.X[a]).norm();
-    if (name == "J") return s.F[a].determinant();
+    if (name == "von_mises") return vonMises(s.state.cauchy[a]);
+    if (name == "pressure") return pressure(s.state.cauchy[a]);
+    if (name == "displacement") return (s.state.x[a] - s.X[a]).norm();
+    if (name == "J") return s.state.F[a].determinant();
     std::optional<double> value;
-    s.forEachField([&](const SnapshotField& field, const auto& array) {
+    s.forEachField([&](const Field& field, const auto& array) {
         using T = typename std::decay_t<decltype(array)>::value_type;
         if constexpr (!std::is_same_v<T, Mat3>)
             if (!value && field.vtuName != nullptr && name == field.vtuName)
@@ -181,7 +181,7 @@ vtkSmartPointer<vtkDataArray> fieldArray(const char* name, const std::vector<std
     return scalarArray<vtkUnsignedCharArray>(name, a, rows);
 }
 
-// Units of the arrays gsph-post derives (the snapshot's own carry theirs: SnapshotField::unit).
+// Units of the arrays gsph-post derives (the snapshot's own carry theirs: Field::unit).
 constexpr std::pair<const char*, const char*> kDerivedUnits[] = {
     {"displacement", "m"}, {"von_mises", "Pa"}, {"pressure", "Pa"},        {"J", "1"},
     {"id", "1"},           {"radius", "m"},     {"node_displacement", "m"}};
@@ -204,17 +204,17 @@ void addParticleArrays(vtkDataSetAttributes* out, const Snapshot& snap, const Ro
     int* ids = id->GetPointer(0);
     parallelFor(n, [&](std::ptrdiff_t k) {
         const std::size_t i = rows(k);
-        for (int d = 0; d < 3; ++d) u[3 * k + d] = snap.x[i][d] - snap.X[i][d];
-        vm[k] = vonMises(snap.stress[i]);
-        p[k] = gsph::pressure(snap.stress[i]);
-        detF[k] = snap.F[i].determinant();
+        for (int d = 0; d < 3; ++d) u[3 * k + d] = snap.state.x[i][d] - snap.X[i][d];
+        vm[k] = vonMises(snap.state.cauchy[i]);
+        p[k] = gsph::pressure(snap.state.cauchy[i]);
+        detF[k] = snap.state.F[i].determinant();
         ids[k] = static_cast<int>(i);
         r[k] = 0.5 * std::cbrt(snap.volume[i] * detF[k]);
     });
     for (vtkDataArray* arr :
          std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J, id, radius})
         out->AddArray(arr);
-    snap.forEachField([&](const SnapshotField& field, const auto& array) {
+    snap.forEachField([&](const Field& field, const auto& array) {
         if (field.vtuName != nullptr) out->AddArray(fieldArray(field.vtuName, array, rows));
     });
 }
@@ -234,11 +234,11 @@ vtkSmartPointer<vtkStringArray> stringArray(const char* name,
 void addFieldData(vtkDataObject* data, const Snapshot& snap, const RunLabels& labels) {
     vtkFieldData* fd = data->GetFieldData();
     auto time = namedArray<vtkDoubleArray>("TimeValue", 1, 1);
-    time->SetValue(0, snap.time);
+    time->SetValue(0, snap.state.time);
     fd->AddArray(time);
     std::vector<std::string> units;
     for (const auto& [name, unit] : kDerivedUnits) units.push_back(std::string(name) + "=" + unit);
-    snap.forEachField([&](const SnapshotField& field, const auto&) {
+    snap.forEachField([&](const Field& field, const auto&) {
         if (field.vtuName != nullptr)
             units.push_back(std::string(field.vtuName) + "=" + field.unit);
     });
@@ -290,7 +290,7 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap, const Run
     parallelFor(n, [&](std::ptrdiff_t a) {
         off[a] = a;
         con[a] = a;
-        for (int d = 0; d < 3; ++d) x[3 * a + d] = snap.x[static_cast<std::size_t>(a)][d];
+        for (int d = 0; d < 3; ++d) x[3 * a + d] = snap.state.x[static_cast<std::size_t>(a)][d];
     });
     vtkNew<vtkCellArray> cells;
     cells->SetData(offsets, connectivity);

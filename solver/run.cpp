@@ -221,6 +221,18 @@ class RunOutputs {
           probes_(options.runDir / "probes.csv", findProbes(c, ref_, file)),
           progress_(options.progress, c.endTime, ref_.size()) {
         log_.beforePrint = [this] { progress_.clear(); };
+        // What each body's material carries between steps (and what its arrays in the
+        // snapshots mean): its model's history variables.
+        const std::vector<std::string> names = bodyNamesOf(file, sim);
+        for (std::size_t b = 0; b < sim.bodies().size(); ++b) {
+            const BodyRange& body = sim.bodies()[b];
+            std::string line = "body '" + names[b] + "': " + std::to_string(body.end - body.begin) +
+                               " particles, history variables:";
+            const auto history = historyVariables(*body.material);
+            for (const HistoryVariable& h : history)
+                line += std::string(" ") + h.field->name + " [" + h.field->unit + "]";
+            log_.add(history.empty() ? line + " none" : line);
+        }
         for (const Probe& p : probes_.probes()) {
             const Vec3& X = ref_.X[static_cast<std::size_t>(p.particle)];
             char line[320];

@@ -37,7 +37,7 @@ BodyEnergy measureBody(const Reference& ref, const State& state, const BodyRange
                     MaterialPoint point;
                     point.cauchy = state.cauchy[ia];
                     point.density = model.elastic().density / J;
-                    if constexpr (Model::kTracksHistory) loadHistory(state, ia, point);
+                    if constexpr (kHasHistory<Model>) loadHistory<Model>(state, ia, point);
                     return ref.quadVolume[ia] * J * model.storedEnergyDensity(point);
                 },
                 partial);

@@ -92,12 +92,12 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     point.cauchy = s.state.cauchy[ia];
     const double J = F.determinant();
     point.density = model.elastic().density / J;
-    if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
+    if constexpr (kHasHistory<Model>) loadHistory<Model>(s.state, ia, point);
     model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
     s.state.F[ia] = F;
     s.state.cauchy[ia] = point.cauchy;
-    if constexpr (Model::kTracksHistory) {
-        storeHistory(point, ia, s.state);
+    if constexpr (kHasHistory<Model>) {
+        storeHistory<Model>(point, ia, s.state);
         // Per current volume → per particle: V J (the particle's current volume).
         const double volume = s.ref.quadVolume[ia] * J;
         s.state.plasticWork[ia] += volume * point.plasticWork;
@@ -120,7 +120,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     MaterialPoint point;
     point.cauchy = s.state.cauchy[ia];
     point.density = model.elastic().density / J;
-    if constexpr (Model::kTracksHistory) loadHistory(s.state, ia, point);
+    if constexpr (kHasHistory<Model>) loadHistory<Model>(s.state, ia, point);
     const double stored = model.storedEnergyDensity(point);
     point.cauchy.setZero();
     s.fractureEnergy[ia] = s.ref.quadVolume[ia] * J * (stored - model.storedEnergyDensity(point));

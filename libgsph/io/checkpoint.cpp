@@ -150,8 +150,9 @@ void writeCheckpoint(const std::filesystem::path& path, const State& state, cons
             writeFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor,
                                kCheckpointFormatMinor);
             writeProvenance(f, provenance);
-            state.forEachArray([&](const char* name, const auto& array) {
-                writeArray(f, kStateGroup + name, array);
+            state.forEachArray([&](const Field& field, const auto& array) {
+                writeArray(f, kStateGroup + field.name, array);
+                f.setAttribute(kStateGroup + field.name, "units", std::string(field.unit));
             });
             state.forEachScalar([&](const char* name, const auto& value) {
                 writeScalar(f, kScalarGroup + name, value);
@@ -169,8 +170,15 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
     checkFormatVersion(f, kCheckpointFormat, kCheckpointFormatMajor);
     Checkpoint c;
     c.provenance = readProvenance(f);
-    c.state.forEachArray(
-        [&](const char* name, auto& array) { readArray(f, kStateGroup + name, array); });
+    c.state.forEachArray([&](const Field& field, auto& array) {
+        const std::string dataset = kStateGroup + field.name;
+        // A 3.0 checkpoint names some arrays otherwise (Field::checkpoint30Name).
+        readArray(f,
+                  field.checkpoint30Name && !f.exists(dataset)
+                      ? kStateGroup + field.checkpoint30Name
+                      : dataset,
+                  array);
+    });
     c.state.forEachScalar(
         [&](const char* name, auto& value) { readScalar(f, kScalarGroup + name, value); });
     c.run = readRunRecord(f);
@@ -178,16 +186,14 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
 }
 
 void checkStateShape(const State& loaded, const State& expected, const std::string& file) {
-    std::vector<std::size_t> sizes;
-    expected.forEachArray([&](const char*, const auto& array) { sizes.push_back(array.size()); });
-    std::size_t i = 0;
-    loaded.forEachArray([&](const char* name, const auto& array) {
-        const std::size_t want = sizes[i++];
-        if (array.size() != want)
-            throw InputError(file + ": state array '" + std::string(name) + "' has " +
-                             std::to_string(array.size()) + " entries, the run has " +
-                             std::to_string(want) + " (another particle file or kappa?)");
-    });
+    State::forEachArrayOf(
+        loaded, expected, [&](const Field& field, const auto& have, const auto& want) {
+            if (have.size() != want.size())
+                throw InputError(file + ": state array '" + std::string(field.name) + "' has " +
+                                 std::to_string(have.size()) + " entries, the run has " +
+                                 std::to_string(want.size()) +
+                                 " (another particle file or kappa?)");
+        });
 }
 
 }  // namespace gsph

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Checkpoint files (DESIGN §1): the whole State of a run, so that a restart continues it bit
 // for bit, plus what the run's driver needs to resume its own schedule. HDF5, format
-// "gsph-checkpoint" 3.0 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
+// "gsph-checkpoint" 3.1 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
-//   /state/NAME            every array of State::forEachArray (Vec3: N×3, Mat3: N×9 row-major,
-//                          double: N, uint8: per pair), stored exactly (no conversion)
+//   /state/NAME            every array of State::forEachArray under its field's name
+//                          (particles/fields.hpp), with its `units` attribute (Vec3: N×3,
+//                          Mat3: N×9 row-major, double: N, uint8: per pair), stored exactly
 //   /state/scalars/NAME    every scalar of State::forEachScalar (float64 or int64, 1 element)
 //   /run/inputs/{role,file,sha256}   the files the run was built from and their SHA-256
 //   /run/counters/NAME     int64 counters of the driver (next output index, ...)
@@ -28,9 +29,10 @@
 namespace gsph {
 
 inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
-/// 3.0: the contact force between each pair of bodies (/state/contact_force).
+/// 3.0: the contact force between each pair of bodies (/state/contact_force). 3.1: the arrays
+/// carry `units`, and the stress is /state/stress as in snapshots (3.0's /state/cauchy is read).
 inline constexpr int kCheckpointFormatMajor = 3;
-inline constexpr int kCheckpointFormatMinor = 0;
+inline constexpr int kCheckpointFormatMinor = 1;
 
 /// A file the run was built from: a restart refuses to continue if its bytes changed.
 struct CheckpointInput {

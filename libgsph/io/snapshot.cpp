@@ -143,19 +143,15 @@ std::vector<double> brokenBondFraction(const PairList& pairs,
 
 Snapshot snapshotOf(const Reference& ref, const State& state) {
     Snapshot s;
-    s.time = state.time;
-    s.step = state.step;
+    s.state.time = state.time;
+    s.state.step = state.step;
+    State::forEachArrayOf(s.state, state, [](const Field& field, auto& to, const auto& from) {
+        if (field.isSavedIn(kSnapshot)) to = from;
+    });
     s.X = ref.X;
-    s.x = state.x;
-    s.v = state.v;
-    s.stress = state.cauchy;
-    s.F = state.F;
     s.volume = ref.quadVolume;
     s.body = ref.body;
     s.space = ref.space;
-    s.plasticStrain = state.plasticStrain;
-    s.temperature = state.temperature;
-    s.damage = state.damage;
     s.transient.assign(state.x.size(), 0);
     for (const OversetEntry& e : ref.overset) s.transient[static_cast<std::size_t>(e.particle)] = 1;
     s.bondDamage = brokenBondFraction(ref.pairs, state.bondIntact);
@@ -170,11 +166,11 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         h5::File f(temp, h5::File::Mode::Create);
         writeFormatVersion(f, kSnapshotFormat, kSnapshotFormatMajor, kSnapshotFormatMinor);
         writeProvenance(f, provenance);
-        const double time = s.time;
-        const double step = static_cast<double>(s.step);
+        const double time = s.state.time;
+        const double step = static_cast<double>(s.state.step);
         f.write("/time", &time, {1});
         f.write("/step", &step, {1});
-        s.forEachField([&](const SnapshotField& field, const auto& array) {
+        s.forEachField([&](const Field& field, const auto& array) {
             const std::string name = std::string("/particles/") + field.name;
             writeField(f, name, array);
             f.setAttribute(name, "units", std::string(field.unit));
@@ -192,16 +188,16 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     Snapshot s;
     s.provenance = readProvenance(f);
     std::vector<std::size_t> dims;
-    s.time = f.read<double>("/time", dims).at(0);
-    s.step = static_cast<long>(f.read<double>("/step", dims).at(0));
+    s.state.time = f.read<double>("/time", dims).at(0);
+    s.state.step = static_cast<long>(f.read<double>("/step", dims).at(0));
     // The particle count from the first field (X, N×3); every other field must agree.
     f.read<double>("/particles/X", dims);
     if (dims.size() != 2 || dims[1] != 3)
         throw IoError(path.string() + ": /particles/X is not an N×3 array");
     const std::size_t n = dims[0];
-    s.forEachField([&](const SnapshotField& field, auto& array) {
+    s.forEachField([&](const Field& field, auto& array) {
         const std::string name = std::string("/particles/") + field.name;
-        if (field.sinceMinor > 0 && !f.exists(name)) {  // a file older than the field
+        if (field.snapshotSinceMinor > 0 && !f.exists(name)) {  // a file older than the field
             using T = typename std::decay_t<decltype(array)>::value_type;
             if constexpr (std::is_arithmetic_v<T>)
                 array.assign(n, T(0));
@@ -231,9 +227,9 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
         source, "the snapshot reader",
         [&](ByteWriter& w) {
             const Snapshot s = readSnapshot(path);
-            w.value(s.time);
-            w.value(s.step);
-            s.forEachField([&](const SnapshotField&, const auto& array) { w.array(array); });
+            w.value(s.state.time);
+            w.value(s.state.step);
+            s.forEachField([&](const Field&, const auto& array) { w.array(array); });
             w.array(s.brokenBonds);
             writeProvenance(w, s.provenance);
         },
@@ -244,9 +240,9 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
         deadlineSeconds > 0 ? deadlineSeconds : fileReadDeadline(path));
     ByteReader r(bytes, source);
     Snapshot s;
-    s.time = r.value<double>();
-    s.step = r.value<long>();
-    s.forEachField([&](const SnapshotField&, auto& array) {
+    s.state.time = r.value<double>();
+    s.state.step = r.value<long>();
+    s.forEachField([&](const Field&, auto& array) {
         array = r.array<typename std::decay_t<decltype(array)>::value_type>();
     });
     s.brokenBonds = r.array<std::array<Index, 2>>();

@@ -8,8 +8,10 @@
 //                                `units` attribute: N×3 (vectors), N×9 row-major (tensors), N
 //   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
 //
-// Snapshot::forEachField is the one list of the per-particle fields: the writer, both readers
-// and gsph-post's .vtu arrays iterate it, so a field added there is written, read and shown.
+// Snapshot::forEachField is the one list of the per-particle fields, derived from the field
+// registry (particles/fields.hpp): the reference's fields and every state array flagged
+// kSnapshot. The writer, both readers and gsph-post's .vtu arrays iterate it, so a state field
+// flagged there is written, read and shown.
 #pragma once
 
 #include <array>
@@ -27,35 +29,26 @@ inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
 inline constexpr int kSnapshotFormatMinor = 4;
 
-/// A per-particle field of a snapshot.
-struct SnapshotField {
-    const char* name;  ///< dataset /particles/NAME
-    const char* unit;  ///< SI unit ("1": a number), the dataset's `units` attribute
-    int sinceMinor;    ///< the format 0.N that added it: older files read as zeros
-    /// The point-data array gsph-post writes for it in the .vtu (nullptr: none; the positions
-    /// are the points, and post derives displacement, J, von Mises and pressure).
-    const char* vtuName;
-};
-
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
-    double time = 0.0;
-    long step = 0;
-    std::vector<Vec3> X, x, v;
-    std::vector<Mat3> stress, F;
-    std::vector<double> volume;
+    /// The state at the snapshot's time: time, step and the arrays whose field is saved in
+    /// snapshots (Field::isSavedIn(kSnapshot): x, v, σ, F, ε̄p, T, D); the others are empty.
+    State state;
+    // The reference's fields.
+    std::vector<Vec3> X;
+    std::vector<double> volume;  ///< ω det M [m³]
     std::vector<Index> body, space;
-    std::vector<double> plasticStrain, temperature, damage;
     /// 1 if the particle is transient in another space (Reference::overset), else 0.
     std::vector<std::uint8_t> transient;
     /// Broken bonds / bonds of each particle (the peridynamic damage index; 0 without bonds).
     std::vector<double> bondDamage;
     std::vector<std::array<Index, 2>> brokenBonds;  ///< (a, b), a < b
     Provenance provenance;
-    Index size() const { return static_cast<Index>(x.size()); }
+    Index size() const { return static_cast<Index>(X.size()); }
 
-    /// Calls visit(field, array) for every per-particle array, in the files' order. Array types:
-    /// std::vector of Vec3, Mat3, double, Index or std::uint8_t (int8 on file).
+    /// Calls visit(field, array) for every per-particle array, in the files' order, with its
+    /// entry of the field registry. Array types: std::vector of Vec3, Mat3, double, Index or
+    /// std::uint8_t (int8 on file).
     template <class Visitor>
     void forEachField(Visitor&& visit) {
         visitFields(*this, visit);
@@ -68,19 +61,15 @@ struct Snapshot {
   private:
     template <class Self, class Visitor>
     static void visitFields(Self& s, Visitor& visit) {
-        visit(SnapshotField{"X", "m", 0, nullptr}, s.X);
-        visit(SnapshotField{"x", "m", 0, nullptr}, s.x);
-        visit(SnapshotField{"v", "m/s", 0, "velocity"}, s.v);
-        visit(SnapshotField{"stress", "Pa", 0, "stress"}, s.stress);
-        visit(SnapshotField{"F", "1", 0, nullptr}, s.F);
-        visit(SnapshotField{"volume", "m^3", 0, "reference_volume"}, s.volume);
-        visit(SnapshotField{"body", "1", 0, "body"}, s.body);
-        visit(SnapshotField{"space", "1", 0, "space"}, s.space);
-        visit(SnapshotField{"plastic_strain", "1", 0, "plastic_strain"}, s.plasticStrain);
-        visit(SnapshotField{"temperature", "K", 0, "temperature"}, s.temperature);
-        visit(SnapshotField{"damage", "1", 0, "damage"}, s.damage);
-        visit(SnapshotField{"transient", "1", 3, "transient"}, s.transient);
-        visit(SnapshotField{"bond_damage", "1", 4, "bond_damage"}, s.bondDamage);
+        visit(fields::kReferencePosition, s.X);
+        s.state.forEachArray([&](const Field& field, auto& array) {
+            if (field.isSavedIn(kSnapshot)) visit(field, array);
+        });
+        visit(fields::kVolume, s.volume);
+        visit(fields::kBody, s.body);
+        visit(fields::kSpace, s.space);
+        visit(fields::kTransient, s.transient);
+        visit(fields::kBondDamage, s.bondDamage);
     }
 };
 

@@ -3,7 +3,7 @@
 //   σ̇ = C : D + W σ − σ W,   C : D = λ tr(D) I + 2G D,   D = sym L, W = skew L, L = Ḟ F^{-1}.
 //
 // The material interface every model follows (materials/plastic_solid.hpp too):
-//   static constexpr bool kTracksHistory;                   // reads/writes ε̄p, T, D, e
+//   static constexpr std::array<HistoryVariable, N> kHistory; // what it carries between steps
 //   void update(MaterialPoint&, const Mat3& D, const Mat3& W, double dt) const;
 //   double waveSpeed(const MaterialPoint&) const;           // for the time step and viscosity
 //   double storedEnergyDensity(const MaterialPoint&) const; // per current volume
@@ -11,6 +11,8 @@
 // Models are plain values held in a std::variant (materials/material.hpp): no virtual call per
 // particle (style habit 7).
 #pragma once
+
+#include <array>
 
 #include <Eigen/LU>
 
@@ -40,7 +42,7 @@ inline Mat3 jaumannElasticUpdate(const ElasticConstants& e, const Mat3& sigma, c
 
 class HypoElastic {
   public:
-    static constexpr bool kTracksHistory = false;
+    static constexpr std::array<HistoryVariable, 0> kHistory{};  ///< none
 
     explicit HypoElastic(const ElasticConstants& e) : elastic_(e) {}
 

@@ -4,6 +4,7 @@
 // of each strength model. Adding a model = adding it to this variant.
 #pragma once
 
+#include <span>
 #include <variant>
 
 #include "materials/hypoelastic.hpp"
@@ -19,9 +20,15 @@ inline const ElasticConstants& elasticConstants(const Material& m) {
                       m);
 }
 
-/// True for models that carry a history (plastic strain, temperature, damage, energy).
+/// The history variables of a material's model (its kHistory), each naming its field.
+inline std::span<const HistoryVariable> historyVariables(const Material& m) {
+    return std::visit(
+        [](const auto& model) { return std::span<const HistoryVariable>(model.kHistory); }, m);
+}
+
+/// True for models that carry a history between steps (plastic strain, temperature, ...).
 inline bool tracksHistory(const Material& m) {
-    return std::visit([](const auto& model) { return model.kTracksHistory; }, m);
+    return !historyVariables(m).empty();
 }
 
 /// The damage model of a material (Johnson–Cook damage of a plastic solid), if it has one.

@@ -1,14 +1,17 @@
 // SPDX-License-Identifier: MIT
 // What a strength model sees of one particle during a step (DESIGN §5), and the copies between
-// it and the State. Every model reads and writes σ and the current density; models with a
-// history (Model::kTracksHistory, e.g. Johnson–Cook) also read and write ε̄p, T, D and the
-// specific internal energy, and report what the update dissipated. The integrator copies the
-// history only for such models, so the elastic path pays nothing for it.
+// it and the State. Every model reads and writes σ and the current density; a model with
+// history variables names them in `kHistory` (its descriptor: each variable's field, so its
+// name and unit, where the State keeps it and where the point carries it), and the integrator
+// copies exactly those in and out around the update: the elastic path (no history) pays
+// nothing. Models also report what the update dissipated.
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 #include "core/types.hpp"
+#include "particles/fields.hpp"
 #include "particles/state.hpp"
 
 namespace gsph {
@@ -26,20 +29,38 @@ struct MaterialPoint {
     double damageDissipation = 0.0;  ///< elastic energy lost when the point failed (D reached 1)
 };
 
-/// The history of particle a from the state.
+/// A history variable of a material model: its field (name, unit: particles/fields.hpp), the
+/// State's array of it and the MaterialPoint's member that carries it through an update.
+struct HistoryVariable {
+    const Field* field;
+    std::vector<double> State::*array;
+    double MaterialPoint::*point;
+};
+
+namespace history {
+inline constexpr HistoryVariable kPlasticStrain{&fields::kPlasticStrain, &State::plasticStrain,
+                                                &MaterialPoint::plasticStrain};
+inline constexpr HistoryVariable kTemperature{&fields::kTemperature, &State::temperature,
+                                              &MaterialPoint::temperature};
+inline constexpr HistoryVariable kDamage{&fields::kDamage, &State::damage, &MaterialPoint::damage};
+inline constexpr HistoryVariable kInternalEnergy{&fields::kInternalEnergy, &State::internalEnergy,
+                                                 &MaterialPoint::internalEnergy};
+}  // namespace history
+
+/// The history of particle a from the state: Model::kHistory's variables.
+template <class Model>
 inline void loadHistory(const State& s, std::size_t a, MaterialPoint& p) {
-    p.plasticStrain = s.plasticStrain[a];
-    p.temperature = s.temperature[a];
-    p.damage = s.damage[a];
-    p.internalEnergy = s.internalEnergy[a];
+    for (const HistoryVariable& h : Model::kHistory) p.*(h.point) = (s.*(h.array))[a];
 }
 
 /// The history of particle a back into the state.
+template <class Model>
 inline void storeHistory(const MaterialPoint& p, std::size_t a, State& s) {
-    s.plasticStrain[a] = p.plasticStrain;
-    s.temperature[a] = p.temperature;
-    s.damage[a] = p.damage;
-    s.internalEnergy[a] = p.internalEnergy;
+    for (const HistoryVariable& h : Model::kHistory) (s.*(h.array))[a] = p.*(h.point);
 }
+
+/// True for a model with history variables.
+template <class Model>
+inline constexpr bool kHasHistory = !Model::kHistory.empty();
 
 }  // namespace gsph

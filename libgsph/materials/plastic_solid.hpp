@@ -29,6 +29,7 @@
 // reader (docs/extending.md).
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "core/types.hpp"
@@ -46,7 +47,10 @@ void checkHeating(double taylorQuinney, double specificHeat);
 template <class Strength>
 class PlasticSolid {
   public:
-    static constexpr bool kTracksHistory = true;
+    /// Its history variables (materials/material_point.hpp): every strength model's, the
+    /// equation of state's energy and the damage.
+    static constexpr std::array kHistory{history::kPlasticStrain, history::kTemperature,
+                                         history::kDamage, history::kInternalEnergy};
 
     PlasticSolid(const ElasticConstants& elastic, const Strength& strength,
                  const EquationOfState& eos, std::optional<JohnsonCookDamage> damage = {})

@@ -4,9 +4,12 @@
 #pragma once
 
 #include <cstdint>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/types.hpp"
+#include "particles/fields.hpp"
 
 namespace gsph {
 
@@ -67,18 +70,26 @@ struct State {
     std::vector<Vec3> contactForce;
     EnergyLedger ledger;
 
-    /// Calls visit(name, array) for every array of the state (per particle, or per pair for
-    /// bond data), in a fixed order. The one list of what the state holds: checkpoints and
-    /// restarts go through it, so a field added here is saved and restored without more code.
+    /// Calls visit(field, array) for every array of the state, in a fixed order, with its entry
+    /// of the field registry (particles/fields.hpp: name, unit, extent, where it is saved). The
+    /// one list of what the state holds: checkpoints, restarts and snapshots go through it, so a
+    /// field added here is saved and restored without more code.
     /// Array types: std::vector<Vec3>, std::vector<Mat3>, std::vector<double>,
     /// std::vector<std::uint8_t>.
     template <class Visitor>
     void forEachArray(Visitor&& visit) {
-        visitArrays(*this, visit);
+        std::apply([&](const auto&... e) { (visit(*e.first, this->*e.second), ...); }, arrays());
     }
     template <class Visitor>
     void forEachArray(Visitor&& visit) const {
-        visitArrays(*this, visit);
+        std::apply([&](const auto&... e) { (visit(*e.first, this->*e.second), ...); }, arrays());
+    }
+    /// Calls visit(field, a's array, b's array) for every array of two states (State or const
+    /// State), in forEachArray's order: to copy or compare arrays of two states.
+    template <class A, class B, class Visitor>
+    static void forEachArrayOf(A& a, B& b, Visitor&& visit) {
+        std::apply([&](const auto&... e) { (visit(*e.first, a.*e.second, b.*e.second), ...); },
+                   arrays());
     }
     /// Calls visit(name, value) for every scalar of the state (time, step, ledger), in order;
     /// value is a double or a long. Like forEachArray, the one list checkpoints go through.
@@ -110,21 +121,21 @@ struct State {
         visit("ledger/contact_energy", s.ledger.contactEnergy);
         visit("ledger/external_power", s.ledger.externalPower);
     }
-    template <class Self, class Visitor>
-    static void visitArrays(Self& s, Visitor& visit) {
-        visit("x", s.x);
-        visit("v", s.v);
-        visit("acceleration", s.acceleration);
-        visit("F", s.F);
-        visit("cauchy", s.cauchy);
-        visit("plastic_strain", s.plasticStrain);
-        visit("temperature", s.temperature);
-        visit("damage", s.damage);
-        visit("internal_energy", s.internalEnergy);
-        visit("plastic_work", s.plasticWork);
-        visit("bond_intact", s.bondIntact);
-        visit("wall_force", s.wallForce);
-        visit("contact_force", s.contactForce);
+    // The arrays in order, each with its field (particles/fields.hpp).
+    static constexpr auto arrays() {
+        return std::tuple{std::pair{&fields::kPosition, &State::x},
+                          std::pair{&fields::kVelocity, &State::v},
+                          std::pair{&fields::kAcceleration, &State::acceleration},
+                          std::pair{&fields::kDeformationGradient, &State::F},
+                          std::pair{&fields::kStress, &State::cauchy},
+                          std::pair{&fields::kPlasticStrain, &State::plasticStrain},
+                          std::pair{&fields::kTemperature, &State::temperature},
+                          std::pair{&fields::kDamage, &State::damage},
+                          std::pair{&fields::kInternalEnergy, &State::internalEnergy},
+                          std::pair{&fields::kPlasticWork, &State::plasticWork},
+                          std::pair{&fields::kBondIntact, &State::bondIntact},
+                          std::pair{&fields::kWallForce, &State::wallForce},
+                          std::pair{&fields::kContactForce, &State::contactForce}};
     }
 
   public:

@@ -249,10 +249,10 @@ TEST_F(CrackSurfaceTest, SecondBodyLeavesTheFacetsOfTheCubeAlone) {
         // The two-body snapshot: the striker at rest, then the cube's particles and bonds.
         Snapshot two;
         two.X = X;
-        two.x = striker;
-        two.x.insert(two.x.end(), alone.x.begin(), alone.x.end());
-        two.F.assign(striker.size(), Mat3::Identity());
-        two.F.insert(two.F.end(), alone.F.begin(), alone.F.end());
+        two.state.x = striker;
+        two.state.x.insert(two.state.x.end(), alone.state.x.begin(), alone.state.x.end());
+        two.state.F.assign(striker.size(), Mat3::Identity());
+        two.state.F.insert(two.state.F.end(), alone.state.F.begin(), alone.state.F.end());
         two.body = body;
         for (const auto& [a, b] : alone.brokenBonds)
             two.brokenBonds.push_back({a + shift, b + shift});
@@ -299,8 +299,8 @@ TEST(CrackSurface, GhostsMeetingAcrossAGapKeepTheFacets) {
                 if (k != 4)
                     s.X.emplace_back((i + 0.5) * h, (j + 0.5) * h,
                                      (k + 0.5) * h + (k > 4 ? 1e-16 : 0.0));
-    s.x = s.X;
-    s.F.assign(s.X.size(), Mat3::Identity());
+    s.state.x = s.X;
+    s.state.F.assign(s.X.size(), Mat3::Identity());
     s.body.assign(s.X.size(), 0);
     // The axis bonds across z = 2h (between layers 1 and 2).
     const Index perLayer = n * n;

@@ -106,22 +106,23 @@ TEST_F(PostRun, VtuArraysEqualTheSnapshot) {
         EXPECT_EQ(grid->GetCellType(a), VTK_VERTEX);
         double p[3];
         grid->GetPoint(a, p);
-        worst = std::max(worst, (Vec3(p[0], p[1], p[2]) - snap.x[i]).norm());
+        worst = std::max(worst, (Vec3(p[0], p[1], p[2]) - snap.state.x[i]).norm());
         const double* u = pd->GetArray("displacement")->GetTuple3(a);
-        worst = std::max(worst, (Vec3(u[0], u[1], u[2]) - (snap.x[i] - snap.X[i])).norm());
+        worst = std::max(worst, (Vec3(u[0], u[1], u[2]) - (snap.state.x[i] - snap.X[i])).norm());
         const double* v = pd->GetArray("velocity")->GetTuple3(a);
-        worst = std::max(worst, (Vec3(v[0], v[1], v[2]) - snap.v[i]).norm());
+        worst = std::max(worst, (Vec3(v[0], v[1], v[2]) - snap.state.v[i]).norm());
         const double* s = pd->GetArray("stress")->GetTuple9(a);
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c) EXPECT_EQ(s[3 * r + c], snap.stress[i](r, c));
-        EXPECT_EQ(scalar("von_mises", a), post::vonMises(snap.stress[i]));
-        EXPECT_EQ(scalar("pressure", a), -snap.stress[i].trace() / 3.0);
-        EXPECT_EQ(scalar("plastic_strain", a), snap.plasticStrain[i]);
-        EXPECT_EQ(scalar("temperature", a), snap.temperature[i]);
-        EXPECT_EQ(scalar("damage", a), snap.damage[i]);
-        EXPECT_EQ(scalar("J", a), snap.F[i].determinant());
+            for (int c = 0; c < 3; ++c) EXPECT_EQ(s[3 * r + c], snap.state.cauchy[i](r, c));
+        EXPECT_EQ(scalar("von_mises", a), post::vonMises(snap.state.cauchy[i]));
+        EXPECT_EQ(scalar("pressure", a), -snap.state.cauchy[i].trace() / 3.0);
+        EXPECT_EQ(scalar("plastic_strain", a), snap.state.plasticStrain[i]);
+        EXPECT_EQ(scalar("temperature", a), snap.state.temperature[i]);
+        EXPECT_EQ(scalar("damage", a), snap.state.damage[i]);
+        EXPECT_EQ(scalar("J", a), snap.state.F[i].determinant());
         EXPECT_EQ(scalar("id", a), static_cast<double>(a));
-        EXPECT_EQ(scalar("radius", a), 0.5 * std::cbrt(snap.volume[i] * snap.F[i].determinant()));
+        EXPECT_EQ(scalar("radius", a),
+                  0.5 * std::cbrt(snap.volume[i] * snap.state.F[i].determinant()));
         EXPECT_EQ(scalar("reference_volume", a), snap.volume[i]);
         EXPECT_EQ(scalar("body", a), snap.body[i]);
         EXPECT_EQ(scalar("space", a), snap.space[i]);
@@ -153,12 +154,13 @@ TEST_F(PostRun, SolidReadsBackWithVtk) {
         EXPECT_EQ(grid->GetCellType(c), VTK_HEXAHEDRON);
         const auto a = static_cast<std::size_t>(cd->GetArray("id")->GetTuple1(c));
         ASSERT_LT(a, static_cast<std::size_t>(snap.size()));
-        EXPECT_EQ(cd->GetArray("von_mises")->GetTuple1(c), post::vonMises(snap.stress[a]));
+        EXPECT_EQ(cd->GetArray("von_mises")->GetTuple1(c), post::vonMises(snap.state.cauchy[a]));
         for (int k = 0; k < 9; ++k)
-            EXPECT_EQ(cd->GetArray("stress")->GetComponent(c, k), snap.stress[a](k / 3, k % 3));
+            EXPECT_EQ(cd->GetArray("stress")->GetComponent(c, k),
+                      snap.state.cauchy[a](k / 3, k % 3));
         EXPECT_EQ(cd->GetArray("radius")->GetTuple1(c),
-                  0.5 * std::cbrt(snap.volume[a] * snap.F[a].determinant()));
-        EXPECT_EQ(cd->GetArray("temperature")->GetTuple1(c), snap.temperature[a]);
+                  0.5 * std::cbrt(snap.volume[a] * snap.state.F[a].determinant()));
+        EXPECT_EQ(cd->GetArray("temperature")->GetTuple1(c), snap.state.temperature[a]);
     }
     EXPECT_STREQ(cd->GetArray("stress")->GetComponentName(8), "ZZ");
     for (const fs::path& vtu :
@@ -168,7 +170,7 @@ TEST_F(PostRun, SolidReadsBackWithVtk) {
         r->Update();
         vtkFieldData* fd = r->GetOutput()->GetFieldData();
         ASSERT_NE(fd->GetArray("TimeValue"), nullptr) << vtu;
-        EXPECT_EQ(fd->GetArray("TimeValue")->GetTuple1(0), snap.time);
+        EXPECT_EQ(fd->GetArray("TimeValue")->GetTuple1(0), snap.state.time);
         auto* sets = vtkStringArray::SafeDownCast(fd->GetAbstractArray("set_names"));
         ASSERT_NE(sets, nullptr) << vtu;
         ASSERT_EQ(sets->GetNumberOfValues(), 2);
@@ -227,7 +229,7 @@ TEST_F(PostRun, PvdListsEverySnapshot) {
         char index[16], entry[160];
         std::snprintf(index, sizeof index, "%06d", k);
         const double t =
-            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(index) + ".h5")).time;
+            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(index) + ".h5")).state.time;
         std::snprintf(entry, sizeof entry, "timestep=\"%.9e\" part=\"0\" file=\"snapshot_%s.vtu\"",
                       t, index);
         EXPECT_NE(pvd.find(entry), std::string::npos) << entry;
@@ -277,7 +279,8 @@ TEST_F(PostRun, PicturesAtChosenTimes) {
         char name[32];
         std::snprintf(name, sizeof name, "%06d", k);
         snapshots.emplace_back(
-            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(name) + ".h5")).time, name);
+            readSnapshot(*dir_ / "run" / ("snapshot_" + std::string(name) + ".h5")).state.time,
+            name);
     }
     for (double t : {1e-5, 1.0}) {
         const auto nearest =

@@ -165,11 +165,11 @@ TEST_F(Restart, JohnsonCookRunWithDamageAndBrokenBondsIsBitIdentical) {
     EXPECT_GT(*std::max_element(stopped.plasticWork.begin(), stopped.plasticWork.end()), 0.0);
     EXPECT_GT(stopped.ledger.damageDissipation, 0.0);
     const Snapshot last = readSnapshot(dir_ / "B/snapshot_000005.h5");
-    EXPECT_NEAR(last.time, 2e-5, 1e-15);
+    EXPECT_NEAR(last.state.time, 2e-5, 1e-15);
     double damage = 0.0, plastic = 0.0;
     for (Index a = 0; a < last.size(); ++a) {
-        damage = std::max(damage, last.damage[static_cast<std::size_t>(a)]);
-        plastic = std::max(plastic, last.plasticStrain[static_cast<std::size_t>(a)]);
+        damage = std::max(damage, last.state.damage[static_cast<std::size_t>(a)]);
+        plastic = std::max(plastic, last.state.plasticStrain[static_cast<std::size_t>(a)]);
     }
     EXPECT_GE(damage, 1.0) << "particles failed";
     EXPECT_GT(plastic, 0.01);
@@ -216,7 +216,8 @@ TEST_F(Restart, WallGravityAndSetForceRunIsBitIdentical) {
     EXPECT_GT(stopped.ledger.contactEnergy, 0.0) << "the bar presses on the wall at the stop";
     const Snapshot last = readSnapshot(dir_ / "B/snapshot_000010.h5");
     double momentumX = 0.0;
-    for (Index a = 0; a < last.size(); ++a) momentumX += last.v[static_cast<std::size_t>(a)].x();
+    for (Index a = 0; a < last.size(); ++a)
+        momentumX += last.state.v[static_cast<std::size_t>(a)].x();
     EXPECT_GT(momentumX, 0.0) << "the wall turned the bar round after the restart";
 }
 
@@ -343,8 +344,8 @@ TEST_F(Restart, InvertedParticleStopsTheRunNamingIt) {
         if (e.path().filename().string().rfind("snapshot_", 0) == 0 && e.path() > last)
             last = e.path();
     const Snapshot s = readSnapshot(last);
-    EXPECT_GT(s.time, 0.0);
-    EXPECT_LE(s.F[static_cast<std::size_t>(a)].determinant(), 0.0);
+    EXPECT_GT(s.state.time, 0.0);
+    EXPECT_LE(s.state.F[static_cast<std::size_t>(a)].determinant(), 0.0);
     EXPECT_NE(readText(dir_ / "run/run.log").find("error: inverted particle"), std::string::npos);
 }
 
@@ -399,7 +400,7 @@ TEST_F(Restart, ARestartMayChangeTheOutputInterval) {
         char name[32];
         std::snprintf(name, sizeof name, "snapshot_%06d.h5", k);
         if (!fs::exists(b / name)) break;
-        times.push_back(readSnapshot(b / name).time);
+        times.push_back(readSnapshot(b / name).state.time);
     }
     ASSERT_GE(times.size(), 3u);
     EXPECT_NEAR(times.back(), 3e-5, 1e-15);

@@ -56,22 +56,22 @@ ParticleFile ogrid(const TempDir& dir, const std::string& extra = "") {
 Snapshot affineSnapshot(const ParticleFile& f, const Mat3& F, const Vec3& c) {
     Snapshot s;
     const auto n = static_cast<std::size_t>(f.size());
-    s.time = 2.5e-5;
+    s.state.time = 2.5e-5;
     s.X = f.X;
-    s.x.resize(n);
-    for (std::size_t a = 0; a < n; ++a) s.x[a] = F * f.X[a] + c;
-    s.v.assign(n, Vec3(1.0, -2.0, 3.0));
-    s.stress.resize(n);
+    s.state.x.resize(n);
+    for (std::size_t a = 0; a < n; ++a) s.state.x[a] = F * f.X[a] + c;
+    s.state.v.assign(n, Vec3(1.0, -2.0, 3.0));
+    s.state.cauchy.resize(n);
     for (std::size_t a = 0; a < n; ++a)
-        s.stress[a] = (Mat3() << 1.0 * a, 2, 3, 2, -4.0 * a, 5, 3, 5, 6).finished() * 1e6;
-    s.F.assign(n, F);
+        s.state.cauchy[a] = (Mat3() << 1.0 * a, 2, 3, 2, -4.0 * a, 5, 3, 5, 6).finished() * 1e6;
+    s.state.F.assign(n, F);
     s.volume = f.volume;
     s.body = f.body;
     s.space = f.space;
-    s.plasticStrain.assign(n, 0.0);
-    for (std::size_t a = 0; a < n; ++a) s.plasticStrain[a] = 1e-3 * a;
-    s.temperature.assign(n, 300.0);
-    s.damage.assign(n, 0.0);
+    s.state.plasticStrain.assign(n, 0.0);
+    for (std::size_t a = 0; a < n; ++a) s.state.plasticStrain[a] = 1e-3 * a;
+    s.state.temperature.assign(n, 300.0);
+    s.state.damage.assign(n, 0.0);
     s.transient.assign(n, 0);
     for (std::size_t a = 0; a < f.transient.size(); ++a) s.transient[a] = f.transient[a];
     s.bondDamage.assign(n, 0.0);
@@ -233,14 +233,14 @@ TEST(HexSolid, CellAndFieldDataReadBack) {
         const auto a = static_cast<std::size_t>(cd->GetArray("id")->GetTuple1(c));
         ASSERT_LT(a, snap.X.size());
         EXPECT_EQ(snap.space[a], 1);
-        EXPECT_EQ(cd->GetArray("plastic_strain")->GetTuple1(c), snap.plasticStrain[a]);
-        EXPECT_EQ(cd->GetArray("von_mises")->GetTuple1(c), post::vonMises(snap.stress[a]));
-        EXPECT_EQ(cd->GetArray("stress")->GetComponent(c, 4), snap.stress[a](1, 1));
+        EXPECT_EQ(cd->GetArray("plastic_strain")->GetTuple1(c), snap.state.plasticStrain[a]);
+        EXPECT_EQ(cd->GetArray("von_mises")->GetTuple1(c), post::vonMises(snap.state.cauchy[a]));
+        EXPECT_EQ(cd->GetArray("stress")->GetComponent(c, 4), snap.state.cauchy[a](1, 1));
         EXPECT_EQ(cd->GetArray("J")->GetTuple1(c), kF.determinant());
     }
     vtkFieldData* fd = g->GetFieldData();
     ASSERT_NE(fd->GetArray("TimeValue"), nullptr);
-    EXPECT_EQ(fd->GetArray("TimeValue")->GetTuple1(0), snap.time);
+    EXPECT_EQ(fd->GetArray("TimeValue")->GetTuple1(0), snap.state.time);
     auto strings = [&](const char* name) {
         std::vector<std::string> out;
         auto* a = vtkStringArray::SafeDownCast(fd->GetAbstractArray(name));

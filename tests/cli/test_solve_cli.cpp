@@ -207,7 +207,7 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     // Momentum across the bar (y, z) stays zero; the last snapshot is at the end time.
     EXPECT_LT(std::abs(rows.back()[col("momentum_y")]), 1e-12);
     const Snapshot last = readSnapshot(run / "snapshot_000010.h5");
-    EXPECT_NEAR(last.time, 3e-5, 1e-15);
+    EXPECT_NEAR(last.state.time, 3e-5, 1e-15);
     EXPECT_EQ(last.size(), 320);
 }
 
@@ -354,7 +354,7 @@ TEST(SolveCli, RollerSetHoldsOnlyItsComponents) {
     const ParticleFile particles = readParticleFile(dir / "particles.h5");
     const Snapshot last = readSnapshot(dir / "run" / "snapshot_000010.h5");
     for (Index a : particles.sets.at("clamp")) {
-        const Vec3& v = last.v[static_cast<std::size_t>(a)];
+        const Vec3& v = last.state.v[static_cast<std::size_t>(a)];
         EXPECT_EQ(v[1], 0.0);
         EXPECT_EQ(v[2], 0.0);
     }
@@ -631,35 +631,35 @@ TEST(SolveCli, ProbesWriteTheirParticlesFieldsAtEveryHistoryRow) {
         if (e.path().filename().string().rfind("snapshot_", 0) != 0) continue;
         const Snapshot snap = readSnapshot(e.path());
         const auto row = std::find_if(rows.begin(), rows.end(), [&](const auto& rw) {
-            return std::abs(rw[0] - snap.time) <= 1e-9 * std::max(snap.time, 1e-12);
+            return std::abs(rw[0] - snap.state.time) <= 1e-9 * std::max(snap.state.time, 1e-12);
         });
         ASSERT_NE(row, rows.end()) << e.path();
         for (const std::string probe : {"tip", "anvil_top", "corner"}) {
             const auto near = [&](const std::string& column, double expected) {
                 EXPECT_NEAR((*row)[col(probe + "_" + column)], expected,
                             5e-10 * std::abs(expected) + 1e-300)
-                    << probe << "_" << column << " at t = " << snap.time;
+                    << probe << "_" << column << " at t = " << snap.state.time;
             };
             // The probe's particle: the one at its x with its displacement.
             std::size_t a = 0;
-            for (; a < snap.x.size(); ++a)
-                if ((snap.x[a] - Vec3((*row)[col(probe + "_x")], (*row)[col(probe + "_y")],
-                                      (*row)[col(probe + "_z")]))
+            for (; a < snap.state.x.size(); ++a)
+                if ((snap.state.x[a] - Vec3((*row)[col(probe + "_x")], (*row)[col(probe + "_y")],
+                                            (*row)[col(probe + "_z")]))
                             .norm() < 1e-9 &&
-                    (snap.x[a] - snap.X[a] -
+                    (snap.state.x[a] - snap.X[a] -
                      Vec3((*row)[col(probe + "_ux")], (*row)[col(probe + "_uy")],
                           (*row)[col(probe + "_uz")]))
                             .norm() < 1e-9)
                     break;
-            ASSERT_LT(a, snap.x.size()) << probe << " at t = " << snap.time;
-            near("vz", snap.v[a][2]);
-            near("stress_zz", snap.stress[a](2, 2));
-            near("stress_xy", snap.stress[a](0, 1));
-            near("von_mises", vonMises(snap.stress[a]));
-            near("pressure", -snap.stress[a].trace() / 3.0);
-            near("J", snap.F[a].determinant());
-            near("plastic_strain", snap.plasticStrain[a]);
-            near("temperature", snap.temperature[a]);
+            ASSERT_LT(a, snap.state.x.size()) << probe << " at t = " << snap.state.time;
+            near("vz", snap.state.v[a][2]);
+            near("stress_zz", snap.state.cauchy[a](2, 2));
+            near("stress_xy", snap.state.cauchy[a](0, 1));
+            near("von_mises", vonMises(snap.state.cauchy[a]));
+            near("pressure", -snap.state.cauchy[a].trace() / 3.0);
+            near("J", snap.state.F[a].determinant());
+            near("plastic_strain", snap.state.plasticStrain[a]);
+            near("temperature", snap.state.temperature[a]);
         }
         ++matched;
     }
