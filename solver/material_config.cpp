@@ -21,7 +21,7 @@ const Keys kCommonKeys = {"model",        "density", "youngs_modulus", "poisson_
                           "bond_stretch", "notes",   "sources"};
 // Keys of a plastic solid besides its strength model's: the parts it composes
 // (libgsph/materials/plastic_solid.hpp).
-const Keys kPlasticPartKeys = {"eos", "damage"};
+const Keys kPlasticPartKeys = {"eos", "damage", "damage_length"};
 
 JohnsonCookParams readJohnsonCook(const TomlKeys& keys, const std::string& where);
 LinearHardeningParams readLinearHardening(const TomlKeys& keys, const std::string& where);
@@ -239,6 +239,11 @@ void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& e
         if (keys.has("damage")) {
             const std::vector<double> d = keys.numbers("damage", 5);
             parts.damage = JohnsonCookDamage{{d[0], d[1], d[2], d[3], d[4]}};
+            parts.damage->length = keys.number("damage_length", 0.0, Sign::NonNegative);
+        } else if (keys.has("damage_length")) {
+            keys.fail("damage_length",
+                      "'damage_length' in " + where +
+                          " needs 'damage' (the Johnson–Cook constants it averages)");
         }
         parts.eos = [&keys, eos, &m] { return eos->build(keys, m.elastic); };
     }

@@ -34,6 +34,7 @@ struct KinematicsStep {
     std::vector<std::uint8_t>& failure;
     std::vector<double>& damageDissipation;
     std::vector<double>& fractureEnergy;
+    const std::vector<double>& averagedDriver;  // ω̄ of nonlocal damage (empty: none)
     double dt;
     bool atRest;  // only derive the factors from the current F and σ (initialisation)
     Mat3 outOfPlane;
@@ -92,7 +93,10 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     point.cauchy = s.state.cauchy[ia];
     const double J = F.determinant();
     point.density = model.elastic().density / J;
-    if constexpr (kHasHistory<Model>) loadHistory<Model>(s.state, ia, point);
+    if constexpr (kHasHistory<Model>) {
+        loadHistory<Model>(s.state, ia, point);
+        if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
+    }
     model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
     s.state.F[ia] = F;
     s.state.cauchy[ia] = point.cauchy;
@@ -190,6 +194,14 @@ StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& b
     for (const BodyRange& body : bodies_)
         if (tracksHistory(*body.material)) damageDissipation_.assign(n, 0.0);
     if (bonds_.enabled()) fractureEnergy_.assign(n, 0.0);
+    for (const BodyRange& body : bodies_) {
+        const JohnsonCookDamage* damage = damageModel(*body.material);
+        nonlocal_.push_back(
+            damage && damage->nonlocal()
+                ? NonlocalAverage(ref.X, ref.quadVolume, body.begin, body.end, damage->length)
+                : NonlocalAverage());
+        if (damage && damage->nonlocal()) averagedDriver_.assign(n, 0.0);
+    }
 }
 
 void StressUpdate::advance(State& state, double dt, bool atRest) {
@@ -201,12 +213,21 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      failure_,
                      damageDissipation_,
                      fractureEnergy_,
+                     averagedDriver_,
                      dt,
                      atRest,
                      ref_.dim.outOfPlane(),
                      bonds_,
                      bonds_.G().data(),
                      viscosity_};
+    // The nonlocal damage's averages of the drivers at t_n, before any particle updates its own.
+    for (const NonlocalAverage& average : nonlocal_)
+        if (!atRest && average.end() > average.begin())
+            parallelFor(average.end() - average.begin(), [&](std::ptrdiff_t i) {
+                const Index a = average.begin() + static_cast<Index>(i);
+                averagedDriver_[static_cast<std::size_t>(a)] =
+                    average.average(state.damageDriver, a);
+            });
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const StencilBlocks& blocks = blocks_[b];
         std::visit(

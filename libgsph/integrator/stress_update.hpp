@@ -3,7 +3,8 @@
 // blocks vectorise the θ-gradient sums, neighbors/stencil_blocks.hpp):
 //   3. F_{n+1} from x_{n+1}, Ḟ from v_{n+½}; L = Ḟ F_{n+½}^{-1}, F_{n+½} = ½(F_n + F_{n+1})
 //   4. σ_{n+1} by the body's material (Jaumann rate), P = J σ F^{-T}; models with a history
-//      (Johnson–Cook) also advance ε̄p, T, D, e, add their plastic work to the particle's
+//      (Johnson–Cook) also advance ε̄p, T, D, e (a nonlocal damage from the average of its
+//      drivers at t_n, failure/nonlocal_damage.hpp), add their plastic work to the particle's
 //      (State::plasticWork) and give the energy lost by failing particles; a particle detached by
 //      broken bonds releases the elastic energy its stress held as fracture energy
 //      (failure/brittle_bonds.hpp)
@@ -18,6 +19,7 @@
 #include <vector>
 
 #include "failure/brittle_bonds.hpp"
+#include "failure/nonlocal_damage.hpp"
 #include "forces/internal_force.hpp"
 #include "integrator/body_range.hpp"
 #include "neighbors/stencil_blocks.hpp"
@@ -72,6 +74,10 @@ class StressUpdate {
     /// bonds can break; written by the detaching step alone, zero before and after it).
     std::vector<double> fractureEnergy_;
     std::vector<double> partialSums_;  ///< scratch of deterministicSum
+    /// Per body, the nonlocal average of its damage driver (empty for local damage), and per
+    /// particle the averages of this step (sized only when a body's damage is nonlocal).
+    std::vector<NonlocalAverage> nonlocal_;
+    std::vector<double> averagedDriver_;
 };
 
 }  // namespace gsph

@@ -30,7 +30,8 @@ namespace gsph {
 
 inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
 /// 3.0: the contact force between each pair of bodies (/state/contact_force). 3.1: the arrays
-/// carry `units`, and the stress is /state/stress as in snapshots (3.0's /state/cauchy is read).
+/// carry `units`, the stress is /state/stress as in snapshots (3.0's /state/cauchy is read), and
+/// /state/damage_driver holds nonlocal damage's driver (a 3.0 file reads it as zeros).
 inline constexpr int kCheckpointFormatMajor = 3;
 inline constexpr int kCheckpointFormatMinor = 1;
 

@@ -16,12 +16,23 @@ namespace gsph {
 
 struct JohnsonCookDamage {
     std::array<double, 5> D = {0.0, 0.0, 0.0, 0.0, 0.0};  ///< D1 … D5
+    /// ℓ [m] of the nonlocal average of the damage driver (failure/nonlocal_damage.hpp); 0:
+    /// local damage, D = Σ Δε̄p/εf at the particle itself.
+    double length = 0.0;
+
+    bool nonlocal() const { return length > 0.0; }
 
     /// εf at triaxiality σ*, strain-rate ratio ε̇* = ε̇/ε̇0 and homologous temperature T*.
     /// May be ≤ 0 for constants with D1 < 0 at high triaxiality: the point then fails at once.
     double failureStrain(double triaxiality, double rateRatio, double homologousTemperature) const {
         return (D[0] + D[1] * std::exp(D[2] * triaxiality)) * std::pow(1.0 + rateRatio, D[3]) *
                (1.0 + D[4] * homologousTemperature);
+    }
+
+    /// The driver increment Δε̄p/εf of a plastic increment dEps > 0, not capped (nonlocal
+    /// damage averages it); 1 where εf ≤ 0 (the point fails at once).
+    double driverIncrement(double dEps, double failureStrainValue) const {
+        return failureStrainValue > 0.0 ? dEps / failureStrainValue : 1.0;
     }
 
     /// Damage after a plastic increment dEps (≥ 0); 1 once the point has failed.

@@ -24,6 +24,10 @@ struct MaterialPoint {
     double temperature = State::kRoomTemperature;  ///< T [K]
     double damage = 0.0;                           ///< Johnson–Cook damage D ∈ [0, 1]
     double internalEnergy = 0.0;                   ///< specific internal energy e [J/kg]
+    double damageDriver = 0.0;  ///< ω = Σ Δε̄p/εf of a nonlocal damage (D is its average)
+    /// In only: the nonlocal average ω̄ of the drivers at t_n (failure/nonlocal_damage.hpp);
+    /// read by models with nonlocal damage, D = min(1, max(D, ω̄)).
+    double averagedDriver = 0.0;
     // What this update dissipated, per unit current volume [J/m³] (out only).
     double plasticWork = 0.0;        ///< Δw_p
     double damageDissipation = 0.0;  ///< elastic energy lost when the point failed (D reached 1)
@@ -45,6 +49,8 @@ inline constexpr HistoryVariable kTemperature{&fields::kTemperature, &State::tem
 inline constexpr HistoryVariable kDamage{&fields::kDamage, &State::damage, &MaterialPoint::damage};
 inline constexpr HistoryVariable kInternalEnergy{&fields::kInternalEnergy, &State::internalEnergy,
                                                  &MaterialPoint::internalEnergy};
+inline constexpr HistoryVariable kDamageDriver{&fields::kDamageDriver, &State::damageDriver,
+                                               &MaterialPoint::damageDriver};
 }  // namespace history
 
 /// The history of particle a from the state: Model::kHistory's variables.

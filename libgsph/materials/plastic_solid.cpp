@@ -72,13 +72,24 @@ void PlasticSolid<Strength>::update(MaterialPoint& p, const Mat3& D, const Mat3&
     double pressure = eos_.advance(p.density, pressureOld, D.trace() * dt / p.density, heat,
                                    failedBefore, p.internalEnergy);
 
-    // Damage and failure: at D = 1 the point drops its deviatoric stress and any tension.
-    if (damage_ && dEps > 0.0) {
-        const double sigmaEq = std::sqrt(1.5 * s.squaredNorm());
-        const double triaxiality = sigmaEq > 0.0 ? -pressure / sigmaEq : 0.0;
-        const double failureStrain = damage_->failureStrain(
-            triaxiality, strainRate / strength_.referenceStrainRate(), Tstar);
-        p.damage = damage_->accumulate(p.damage, dEps, failureStrain);
+    // Damage and failure: at D = 1 the point drops its deviatoric stress and any tension. A
+    // nonlocal damage accumulates the local driver and takes D from its neighbourhood's average
+    // (failure/nonlocal_damage.hpp), so a point may fail without flowing itself.
+    const bool nonlocal = damage_ && damage_->nonlocal() && !failedBefore;
+    if (damage_ && (dEps > 0.0 || nonlocal)) {
+        double failureStrain = 0.0;
+        if (dEps > 0.0) {
+            const double sigmaEq = std::sqrt(1.5 * s.squaredNorm());
+            const double triaxiality = sigmaEq > 0.0 ? -pressure / sigmaEq : 0.0;
+            failureStrain = damage_->failureStrain(
+                triaxiality, strainRate / strength_.referenceStrainRate(), Tstar);
+        }
+        if (nonlocal) {
+            if (dEps > 0.0) p.damageDriver += damage_->driverIncrement(dEps, failureStrain);
+            p.damage = std::min(1.0, std::max(p.damage, p.averagedDriver));
+        } else {
+            p.damage = damage_->accumulate(p.damage, dEps, failureStrain);
+        }
         if (p.damage >= 1.0) {
             const double before = s.squaredNorm() / (4.0 * G) +
                                   eos_.storedEnergyDensity(p.density, p.internalEnergy, false);

@@ -50,7 +50,8 @@ class PlasticSolid {
     /// Its history variables (materials/material_point.hpp): every strength model's, the
     /// equation of state's energy and the damage.
     static constexpr std::array kHistory{history::kPlasticStrain, history::kTemperature,
-                                         history::kDamage, history::kInternalEnergy};
+                                         history::kDamage, history::kInternalEnergy,
+                                         history::kDamageDriver};
 
     PlasticSolid(const ElasticConstants& elastic, const Strength& strength,
                  const EquationOfState& eos, std::optional<JohnsonCookDamage> damage = {})

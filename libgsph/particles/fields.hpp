@@ -39,6 +39,8 @@ struct Field {
     int snapshotSinceMinor = 0;
     /// Its dataset name in checkpoints of format 3.0, which are still read (nullptr: the same).
     const char* checkpoint30Name = nullptr;
+    /// The checkpoint format 3.N that added it: an older checkpoint reads it as zeros.
+    int checkpointSinceMinor = 0;
 
     constexpr bool isSavedIn(SavedIn where) const { return (savedIn & where) != 0; }
 };
@@ -58,6 +60,9 @@ inline constexpr Field kTemperature{"temperature", "K", Extent::Particle, kCheck
                                     "temperature"};
 inline constexpr Field kDamage{"damage", "1", Extent::Particle, kCheckpoint | kSnapshot, "damage"};
 inline constexpr Field kInternalEnergy{"internal_energy", "J/kg", Extent::Particle, kCheckpoint};
+/// ω = Σ Δε̄p/εf, the local driver of a nonlocal damage (failure/nonlocal_damage.hpp).
+inline constexpr Field kDamageDriver{"damage_driver", "1", Extent::Particle, kCheckpoint,
+                                     nullptr,         0,   nullptr,          1};
 inline constexpr Field kPlasticWork{"plastic_work", "J", Extent::Particle, kCheckpoint};
 inline constexpr Field kBondIntact{"bond_intact", "1", Extent::Pair, kCheckpoint};
 inline constexpr Field kWallForce{"wall_force", "N", Extent::Wall, kCheckpoint};

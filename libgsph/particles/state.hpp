@@ -54,6 +54,9 @@ struct State {
     /// Specific internal energy of compression e [J/kg], ∫ −p tr(D)/ρ dt: the energy term of the
     /// Mie–Grüneisen equation of state (materials/eos.hpp); 0 for models that do not need it.
     std::vector<double> internalEnergy;
+    /// The local driver ω = Σ Δε̄p/εf of a nonlocal damage (failure/nonlocal_damage.hpp), whose
+    /// average over the material length is D; 0 for local damage and models without damage.
+    std::vector<double> damageDriver;
     /// Work dissipated by plastic flow in the particle over the run, Σ V J Δw_p [J] (≥ 0): kept
     /// per particle rather than in the ledger so that the bodies' shares add up to the run's
     /// plastic work exactly (integrator/energy.hpp).
@@ -132,6 +135,7 @@ struct State {
                           std::pair{&fields::kTemperature, &State::temperature},
                           std::pair{&fields::kDamage, &State::damage},
                           std::pair{&fields::kInternalEnergy, &State::internalEnergy},
+                          std::pair{&fields::kDamageDriver, &State::damageDriver},
                           std::pair{&fields::kPlasticWork, &State::plasticWork},
                           std::pair{&fields::kBondIntact, &State::bondIntact},
                           std::pair{&fields::kWallForce, &State::wallForce},
@@ -155,6 +159,7 @@ struct State {
         s.temperature.assign(n, kRoomTemperature);
         s.damage.assign(n, 0.0);
         s.internalEnergy.assign(n, 0.0);
+        s.damageDriver.assign(n, 0.0);
         s.plasticWork.assign(n, 0.0);
         s.bondIntact.assign(pairCount, 1);
         return s;

@@ -129,6 +129,21 @@ TEST(MaterialLibrary, BadMaterialFilesNameTheirLine) {
     const std::string cited = "\nspecific_heat = \"J";  // the source line, not the constant
     uncited.replace(uncited.find(cited), cited.size(), "\nspecfic_heat = \"J");
     expectError(uncited, "", "sources.specfic_heat must cite a constant of this material");
+    // A nonlocal damage length needs the damage it averages, and must not be negative.
+    std::string lengthAlone = copper;
+    lengthAlone.insert(lengthAlone.find("yield_stress"), "damage_length = 1e-3\n");
+    expectError(lengthAlone, "8:", "'damage_length' in material 'bad' needs 'damage'");
+    std::ifstream weldoxIn(kLibrary / "weldox_460e.toml");
+    std::string weldox((std::istreambuf_iterator<char>(weldoxIn)), {});
+    weldox.insert(weldox.find("yield_stress"), "damage_length = 1.5e-3\n");
+    write(dir / "nonlocal.toml", weldox);
+    const solver::MaterialSpec nonlocal = solver::readMaterialFile(dir / "nonlocal.toml");
+    ASSERT_TRUE(nonlocal.material);
+    const JohnsonCookDamage* damage = damageModel(*nonlocal.material);
+    ASSERT_NE(damage, nullptr);
+    EXPECT_EQ(damage->length, 1.5e-3);
+    weldox.replace(weldox.find("1.5e-3"), 6, "-1e-3");
+    expectError(weldox, "8:", "'damage_length' in material 'bad' must be");
 }
 
 TEST(MaterialPointCli, CopperInUniaxialStressFollowsTheClosedForm) {

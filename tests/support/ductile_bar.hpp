@@ -21,12 +21,13 @@ struct PulledWeldoxBar {
     Simulation sim;
     std::vector<Index> left, right;  ///< the end layers, held at −kSpeed and +kSpeed along x
 
-    /// `failedBonds`: SolverOptions::failedBonds (empty: failed particles keep their bonds).
-    explicit PulledWeldoxBar(std::vector<FailedBondRule> failedBonds = {})
+    /// `failedBonds`: SolverOptions::failedBonds (empty: failed particles keep their bonds);
+    /// `damageLength`: ℓ of a nonlocal damage (0: local).
+    explicit PulledWeldoxBar(std::vector<FailedBondRule> failedBonds = {},
+                             double damageLength = 0.0)
         : sim(latticeReference(gradedBoxMap(Vec3(kLength, kWidth, kWidth), {}), 3, {25, 5, 5},
                                7850.0, 1.2),
-              {withLinearEos(kWeldoxElastic, weldoxParams(),
-                             JohnsonCookDamage{{0.01, 0.17, -0.54, -0.015, 0.0}})},
+              {withLinearEos(kWeldoxElastic, weldoxParams(), damage(damageLength))},
               options(std::move(failedBonds))) {
         const Reference& ref = sim.reference();
         for (Index a = 0; a < ref.size(); ++a) {
@@ -41,6 +42,11 @@ struct PulledWeldoxBar {
     }
 
   private:
+    static JohnsonCookDamage damage(double length) {
+        JohnsonCookDamage d{{0.01, 0.17, -0.54, -0.015, 0.0}};
+        d.length = length;
+        return d;
+    }
     static SolverOptions options(std::vector<FailedBondRule> failedBonds) {
         SolverOptions o;
         o.viscosity = {1.0, 1.0};

@@ -55,7 +55,8 @@ inline JohnsonCook withLinearEos(const ElasticConstants& e, const JohnsonCookPar
 
 /// A soft steel (A = 2 MPa) with the Mie–Grüneisen pressure and damage that fails at
 /// ε̄p ≈ 0.001: a 40 m/s impact flows, heats and fails at once (tests of plastic runs).
-inline JohnsonCook softFailingSteel() {
+/// `damageLength`: ℓ of a nonlocal damage (0: local).
+inline JohnsonCook softFailingSteel(double damageLength = 0.0) {
     JohnsonCookParams p;
     p.yieldStress = 2e6;
     p.hardeningModulus = 50e6;
@@ -64,8 +65,9 @@ inline JohnsonCook softFailingSteel() {
     p.meltingTemperature = 1800.0;
     p.specificHeat = 450.0;
     const ElasticConstants e(7800.0, 200e9, 0.3);
-    return JohnsonCook(e, p, EquationOfState::mieGruneisen(7800.0, {4570.0, 1.49, 1.93}),
-                       JohnsonCookDamage{{0.0, 0.001, 0.0, 0.0, 0.0}});
+    JohnsonCookDamage damage{{0.0, 0.001, 0.0, 0.0, 0.0}};
+    damage.length = damageLength;
+    return JohnsonCook(e, p, EquationOfState::mieGruneisen(7800.0, {4570.0, 1.49, 1.93}), damage);
 }
 
 }  // namespace gsph::testing

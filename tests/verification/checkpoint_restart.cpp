@@ -102,8 +102,9 @@ TEST(Checkpoint, RoundTripKeepsEveryArrayAndScalarBitForBit) {
 // A bar of Johnson–Cook steel with damage and brittle bonds, one end pulled fast, the other
 // end struck: plastic flow, failing particles and broken bonds; `precracked`: a notch (an
 // initial crack across half the section at x = 0.1) besides.
-std::unique_ptr<Simulation> makeRun(bool plastic = true, bool precracked = false) {
-    const Material steel = testing::softFailingSteel();
+std::unique_ptr<Simulation> makeRun(bool plastic = true, bool precracked = false,
+                                    double damageLength = 0.0) {
+    const Material steel = testing::softFailingSteel(damageLength);
     const ElasticConstants e(7800.0, 200e9, 0.3);
     SolverOptions options;
     options.viscosity = {1.0, 1.0};
@@ -146,6 +147,25 @@ TEST(Checkpoint, ResumedSimulationStepsBitIdentically) {
     EXPECT_GT(*std::max_element(a->state().plasticWork.begin(), a->state().plasticWork.end()), 0.0);
     EXPECT_GT(a->state().ledger.damageDissipation, 0.0);
     EXPECT_NE(a->state().ledger.fractureEnergy, 0.0);
+}
+
+// Nonlocal damage keeps its drivers in the state (the averages are taken from them at each
+// step): a resumed run steps bit-identically.
+TEST(Checkpoint, ResumedNonlocalDamageSimulationStepsBitIdentically) {
+    const double length = 0.03;  // about four spacings along the bar
+    const auto a = makeRun(true, false, length);
+    for (int i = 0; i < 80; ++i) a->step();
+    const auto b = makeRun(true, false, length);
+    for (int i = 0; i < 30; ++i) b->step();
+    test::TempDir dir;
+    writeCheckpoint(dir / "c.h5", b->state(), {}, {});
+    const auto resumed = makeRun(true, false, length);
+    resumed->resume(readCheckpoint(dir / "c.h5").state, "c.h5");
+    for (int i = 0; i < 50; ++i) resumed->step();
+    EXPECT_EQ(differences(resumed->state(), a->state()), "");
+    EXPECT_GT(*std::max_element(b->state().damageDriver.begin(), b->state().damageDriver.end()),
+              0.0);
+    EXPECT_GT(a->state().ledger.damageDissipation, 0.0);
 }
 
 // The initial cracks' bonds are state: a resumed run carries them from the checkpoint (the

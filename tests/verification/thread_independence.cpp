@@ -87,6 +87,22 @@ TEST(ThreadIndependence, PlasticRunsAreBitIdenticalToo) {
     EXPECT_GT(e1.damageDissipation, 0.0);
 }
 
+// Nonlocal damage: the averages of the drivers over ℓ run in a fixed order per particle, so
+// damage, failure and the failure loss do not depend on the thread count either.
+TEST(ThreadIndependence, NonlocalDamageToo) {
+    const Material plastic = testing::softFailingSteel(0.015);  // ℓ: about two spacings
+    EnergyReport e1, e2;
+    const State s1 = runWithThreads(1, &e1, plastic, 40);
+    const State s2 = runWithThreads(2, &e2, plastic, 40);
+    EXPECT_TRUE(bitIdentical(s1.x, s2.x));
+    EXPECT_TRUE(bitIdentical(s1.cauchy, s2.cauchy));
+    EXPECT_TRUE(bitIdentical(s1.damage, s2.damage));
+    EXPECT_TRUE(bitIdentical(s1.damageDriver, s2.damageDriver));
+    EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
+    EXPECT_GT(*std::max_element(s1.damageDriver.begin(), s1.damageDriver.end()), 1.0);
+    EXPECT_GT(e1.damageDissipation, 0.0);
+}
+
 // Brittle bonds break where the -40 m/s half pulls away; the broken flags, the recomputed
 // gradients and the fracture energy (failure/brittle_bonds.hpp) do not depend on the thread
 // count either.

@@ -72,7 +72,7 @@ TEST(FieldRegistry, EveryFieldHasAUniqueNameAUnitAndConsistentFlags) {
     // Every state array is in checkpoints (a restart needs all of it).
     State().forEachArray(
         [&](const Field& f, const auto&) { EXPECT_TRUE(f.isSavedIn(kCheckpoint)) << f.name; });
-    EXPECT_EQ(names.size(), 19u);  // 13 state arrays + 6 reference fields of snapshots
+    EXPECT_EQ(names.size(), 20u);  // 14 state arrays + 6 reference fields of snapshots
 }
 
 TEST(FieldRegistry, ASnapshotHoldsExactlyTheStateArraysFlaggedForSnapshots) {
@@ -123,7 +123,7 @@ TEST(FieldRegistry, MaterialsNameTheirHistoryByTheFieldsOfTheStateArraysTheyKeep
                     EquationOfState::linear(copper.density, copper.bulkModulus()))};
     EXPECT_TRUE(historyVariables(models[0]).empty());
     EXPECT_FALSE(tracksHistory(models[0]));
-    ASSERT_EQ(historyVariables(models[1]).size(), 4u);
+    ASSERT_EQ(historyVariables(models[1]).size(), 5u);
     EXPECT_TRUE(tracksHistory(models[1]));
     std::set<std::string> names;
     for (const HistoryVariable& h : historyVariables(models[1])) {
@@ -131,7 +131,7 @@ TEST(FieldRegistry, MaterialsNameTheirHistoryByTheFieldsOfTheStateArraysTheyKeep
         names.insert(h.field->name);
     }
     EXPECT_EQ(names, (std::set<std::string>{"plastic_strain", "temperature", "damage",
-                                            "internal_energy"}));
+                                            "internal_energy", "damage_driver"}));
 }
 
 TEST(FieldRegistry, LoadingAndStoringAHistoryCopiesExactlyTheModelsVariables) {
