@@ -187,7 +187,8 @@ constexpr std::pair<const char*, const char*> kDerivedUnits[] = {
     {"id", "1"},           {"radius", "m"},     {"node_displacement", "m"}};
 
 // The per-particle arrays (point data of the cloud, cell data of the solid): displacement,
-// von_mises, pressure, J, id, radius, then every snapshot field with a vtuName.
+// von_mises, pressure, J, id, radius, then every snapshot field with a vtuName (a field a
+// snapshot built in code left empty is not written; readSnapshot fills every one).
 void addParticleArrays(vtkDataSetAttributes* out, const Snapshot& snap, const Rows& rows) {
     const vtkIdType n = rows.size();
     auto displacement = namedArray<vtkDoubleArray>("displacement", 3, n);
@@ -215,7 +216,8 @@ void addParticleArrays(vtkDataSetAttributes* out, const Snapshot& snap, const Ro
          std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J, id, radius})
         out->AddArray(arr);
     snap.forEachField([&](const Field& field, const auto& array) {
-        if (field.vtuName != nullptr) out->AddArray(fieldArray(field.vtuName, array, rows));
+        if (field.vtuName != nullptr && !array.empty())
+            out->AddArray(fieldArray(field.vtuName, array, rows));
     });
 }
 
@@ -238,8 +240,8 @@ void addFieldData(vtkDataObject* data, const Snapshot& snap, const RunLabels& la
     fd->AddArray(time);
     std::vector<std::string> units;
     for (const auto& [name, unit] : kDerivedUnits) units.push_back(std::string(name) + "=" + unit);
-    snap.forEachField([&](const Field& field, const auto&) {
-        if (field.vtuName != nullptr)
+    snap.forEachField([&](const Field& field, const auto& array) {
+        if (field.vtuName != nullptr && !array.empty())
             units.push_back(std::string(field.vtuName) + "=" + field.unit);
     });
     units.push_back("TimeValue=s");

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
-// HDF5, format "gsph-snapshot" 0.4 (layout in docs/formats.md). Written atomically
+// HDF5, format "gsph-snapshot" 0.5 (layout in docs/formats.md). Written atomically
 // (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)
@@ -27,12 +27,14 @@ namespace gsph {
 
 inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
-inline constexpr int kSnapshotFormatMinor = 4;
+/// 0.5: internal_energy, plastic_work, damage_driver (older files read them as zeros).
+inline constexpr int kSnapshotFormatMinor = 5;
 
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
     /// The state at the snapshot's time: time, step and the arrays whose field is saved in
-    /// snapshots (Field::isSavedIn(kSnapshot): x, v, σ, F, ε̄p, T, D); the others are empty.
+    /// snapshots (Field::isSavedIn(kSnapshot): x, v, σ, F, ε̄p, T, D, e, plastic work and the
+    /// damage driver); the others are empty.
     State state;
     // The reference's fields.
     std::vector<Vec3> X;

@@ -52,18 +52,29 @@ inline constexpr Field kPosition{"x", "m", Extent::Particle, kCheckpoint | kSnap
 inline constexpr Field kVelocity{"v", "m/s", Extent::Particle, kCheckpoint | kSnapshot, "velocity"};
 inline constexpr Field kAcceleration{"acceleration", "m/s^2", Extent::Particle, kCheckpoint};
 inline constexpr Field kDeformationGradient{"F", "1", Extent::Particle, kCheckpoint | kSnapshot};
-inline constexpr Field kStress{"stress", "Pa", Extent::Particle, kCheckpoint | kSnapshot,
-                               "stress", 0,    "cauchy"};
+inline constexpr Field kStress{.name = "stress",
+                               .unit = "Pa",
+                               .extent = Extent::Particle,
+                               .savedIn = kCheckpoint | kSnapshot,
+                               .vtuName = "stress",
+                               .checkpoint30Name = "cauchy"};
 inline constexpr Field kPlasticStrain{"plastic_strain", "1", Extent::Particle,
                                       kCheckpoint | kSnapshot, "plastic_strain"};
 inline constexpr Field kTemperature{"temperature", "K", Extent::Particle, kCheckpoint | kSnapshot,
                                     "temperature"};
 inline constexpr Field kDamage{"damage", "1", Extent::Particle, kCheckpoint | kSnapshot, "damage"};
-inline constexpr Field kInternalEnergy{"internal_energy", "J/kg", Extent::Particle, kCheckpoint};
+inline constexpr Field kInternalEnergy{
+    "internal_energy", "J/kg", Extent::Particle, kCheckpoint | kSnapshot, "internal_energy", 5};
 /// ω = Σ Δε̄p/εf, the local driver of a nonlocal damage (failure/nonlocal_damage.hpp).
-inline constexpr Field kDamageDriver{"damage_driver", "1", Extent::Particle, kCheckpoint,
-                                     nullptr,         0,   nullptr,          1};
-inline constexpr Field kPlasticWork{"plastic_work", "J", Extent::Particle, kCheckpoint};
+inline constexpr Field kDamageDriver{.name = "damage_driver",
+                                     .unit = "1",
+                                     .extent = Extent::Particle,
+                                     .savedIn = kCheckpoint | kSnapshot,
+                                     .vtuName = "damage_driver",
+                                     .snapshotSinceMinor = 5,
+                                     .checkpointSinceMinor = 1};
+inline constexpr Field kPlasticWork{"plastic_work", "J", Extent::Particle, kCheckpoint | kSnapshot,
+                                    "plastic_work", 5};
 inline constexpr Field kBondIntact{"bond_intact", "1", Extent::Pair, kCheckpoint};
 inline constexpr Field kWallForce{"wall_force", "N", Extent::Wall, kCheckpoint};
 inline constexpr Field kContactForce{"contact_force", "N", Extent::BodyPair, kCheckpoint};

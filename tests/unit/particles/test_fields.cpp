@@ -96,7 +96,7 @@ TEST(FieldRegistry, ASnapshotHoldsExactlyTheStateArraysFlaggedForSnapshots) {
                                   EXPECT_TRUE(kept.empty());
                               }
                           });
-    EXPECT_EQ(flagged, 7);  // x, v, σ, F, ε̄p, T, D
+    EXPECT_EQ(flagged, 10);  // x, v, σ, F, ε̄p, T, D, e, plastic work, damage driver
     // And forEachField visits them with the same fields.
     int visited = 0;
     snap.forEachField([&](const Field& f, const auto&) {
