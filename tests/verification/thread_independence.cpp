@@ -94,10 +94,10 @@ TEST(ThreadIndependence, NonlocalDamageToo) {
     EnergyReport e1, e2;
     const State s1 = runWithThreads(1, &e1, plastic, 40);
     const State s2 = runWithThreads(2, &e2, plastic, 40);
-    EXPECT_TRUE(bitIdentical(s1.x, s2.x));
-    EXPECT_TRUE(bitIdentical(s1.cauchy, s2.cauchy));
-    EXPECT_TRUE(bitIdentical(s1.damage, s2.damage));
-    EXPECT_TRUE(bitIdentical(s1.damageDriver, s2.damageDriver));
+    // Every array of the state (x, σ, D, the drivers, ...), through the field registry.
+    State::forEachArrayOf(s1, s2, [](const Field& field, const auto& a, const auto& b) {
+        EXPECT_TRUE(bitIdentical(a, b)) << field.name;
+    });
     EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
     EXPECT_GT(*std::max_element(s1.damageDriver.begin(), s1.damageDriver.end()), 1.0);
     EXPECT_GT(e1.damageDissipation, 0.0);
