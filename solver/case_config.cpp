@@ -71,8 +71,10 @@ void readContact(const std::string& file, const toml::table& root, CaseConfig& c
     if (!t)
         throw InputError(file + ":" + std::to_string(n->source().begin.line) +
                          ": 'contact' must be a table [contact]");
-    const TomlKeys r(file, *t, "[contact]", {"between_bodies", "penalty", "distance"});
+    const TomlKeys r(file, *t, "[contact]",
+                     {"between_bodies", "self_contact", "penalty", "distance"});
     c.contact.betweenBodies = r.flag("between_bodies", c.contact.betweenBodies);
+    c.contact.selfContact = r.flag("self_contact", c.contact.selfContact);
     c.contact.penalty = r.number("penalty", c.contact.penalty, Sign::Positive);
     c.contact.distance = r.number("distance", c.contact.distance, Sign::Positive);
 }

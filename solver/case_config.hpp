@@ -86,8 +86,9 @@ struct ProbeSpec {
 /// [contact]: the penalty law of libgsph/contact/penalty_contact.hpp.
 struct ContactSpec {
     bool betweenBodies = true;
-    double penalty = 4.0;   ///< s
-    double distance = 1.0;  ///< δ
+    bool selfContact = false;  ///< the parts of one body separated by broken bonds
+    double penalty = 4.0;      ///< s
+    double distance = 1.0;     ///< δ
 };
 
 struct CaseConfig {

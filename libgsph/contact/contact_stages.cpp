@@ -5,7 +5,7 @@ namespace gsph {
 
 StageReport PairContactStage::addForces(const State& state, ForceChannels& out) {
     StageReport report;
-    report.potential = contact_.addForces(state.x, out.force, out.frequency2);
+    report.potential = contact_.addForces(state.x, out.force, out.frequency2, state.bondIntact);
     return report;
 }
 
@@ -24,7 +24,7 @@ std::vector<std::unique_ptr<ForceStage>> makeContactStages(const Reference& ref,
                                                            const ContactOptions& options,
                                                            std::vector<Wall> walls) {
     std::vector<std::unique_ptr<ForceStage>> stages;
-    const bool pairs = contactBetweenBodies(options, bodies);
+    const bool pairs = contactBetweenBodies(options, bodies) || options.selfContact;
     if (!pairs && walls.empty()) return stages;
     const std::vector<double> k = contactStiffness(ref, pWaveSpeed2, options.penalty);
     ContactShapes shapes = contactShapes(ref, options.distance);

@@ -20,7 +20,7 @@ namespace gsph {
 class PairContactStage final : public ForceStage {
   public:
     explicit PairContactStage(PenaltyContact contact) : contact_(std::move(contact)) {}
-    std::string name() const override { return "contact between bodies"; }
+    std::string name() const override { return "contact between particles"; }
     StageNeeds needs() const override { return {.frequency2 = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
     /// Per ordered pair of bodies, the force between them: State::contactForce (history).
@@ -55,8 +55,8 @@ inline bool contactBetweenBodies(const ContactOptions& options, std::size_t bodi
 }
 
 /// The contact stages a run needs, in their order (pair contact, then walls): none without
-/// walls and with a single body (or contact between bodies off). `pWaveSpeed2`: c_a² per
-/// particle [m²/s²], the penalty stiffness's scale (contactStiffness).
+/// walls and with a single body (or contact between bodies off) unless self-contact is on.
+/// `pWaveSpeed2`: c_a² per particle [m²/s²], the penalty stiffness's scale (contactStiffness).
 std::vector<std::unique_ptr<ForceStage>> makeContactStages(const Reference& ref,
                                                            const std::vector<double>& pWaveSpeed2,
                                                            std::size_t bodies,

@@ -51,7 +51,9 @@ PenaltyContact::PenaltyContact(const Reference& ref, std::vector<double> stiffne
     const auto n = static_cast<std::size_t>(ref.size());
     const bool severalBodies = n > 0 && std::any_of(ref.body.begin(), ref.body.end(),
                                                     [&](Index b) { return b != ref.body.front(); });
-    active_ = options.betweenBodies && severalBodies;
+    betweenBodies_ = options.betweenBodies && severalBodies;
+    selfContact_ = options.selfContact && n > 0;
+    active_ = betweenBodies_ || selfContact_;
     if (!active_) return;
     const double largest =
         *std::max_element(shapes_.largestRadius.begin(), shapes_.largestRadius.end());
@@ -76,7 +78,10 @@ PenaltyContact::PenaltyContact(const Reference& ref, std::vector<double> stiffne
             ref.body[static_cast<std::size_t>(ranges_[r].first)])] = r;
     boxLow_.resize(ranges_.size());
     boxHigh_.resize(ranges_.size());
+    damagedLow_.resize(ranges_.size());
+    damagedHigh_.resize(ranges_.size());
     candidate_.resize(n);
+    if (selfContact_) damaged_.assign(n, 0);
     cell_.resize(n);
     bucket_.resize(n);
     bucketStart_.resize(buckets + 2);  // the last bucket holds the particles out of reach
@@ -95,31 +100,63 @@ std::size_t PenaltyContact::bucketOf(const Cell& c) const {
     return static_cast<std::size_t>(h & (bucketStart_.size() - 3));
 }
 
+// Which particles have lost a bond (self-contact's pairs need one of them).
+void PenaltyContact::markDamaged(const std::vector<std::uint8_t>& bondIntact) {
+    const PairList& P = ref_->pairs;
+    anyDamaged_ = false;
+    if (!selfContact_ || bondIntact.empty()) return;
+    parallelFor(ref_->size(), [&](Index a) {
+        std::uint8_t lost = 0;
+        for (Index k = P.begin(a); k < P.end(a) && !lost; ++k)
+            lost = bondIntact[static_cast<std::size_t>(k)] == 0;
+        damaged_[static_cast<std::size_t>(a)] = lost;
+    });
+    anyDamaged_ = std::any_of(damaged_.begin(), damaged_.end(), [](std::uint8_t d) { return d; });
+}
+
+// Whether an intact bond joins a and b (a's list is sorted by neighbour).
+bool PenaltyContact::bonded(Index a, Index b, const std::vector<std::uint8_t>& bondIntact) const {
+    const PairList& P = ref_->pairs;
+    const auto first = P.neighbor.begin() + P.begin(a), last = P.neighbor.begin() + P.end(a);
+    const auto it = std::lower_bound(first, last, b);
+    return it != last && *it == b && bondIntact[static_cast<std::size_t>(it - P.neighbor.begin())];
+}
+
 // Which particles can touch another body at all: those inside another body's bounding box
 // grown by the largest contact distance (a pair in contact lies within that reach of each
-// other, so both ends pass). Keeps the search to the contact zone (the interior of a plate far
-// from the projectile costs a box test, not 27 cells).
+// other, so both ends pass); with self-contact also those inside the box of their own body's
+// damaged particles grown alike. Keeps the search to the contact zone (the interior of a plate
+// far from the projectile costs a box test, not 27 cells).
 void PenaltyContact::markCandidates(const std::vector<Vec3>& x) {
     const Reference& ref = *ref_;
     const Vec3 big = Vec3::Constant(std::numeric_limits<double>::infinity());
     for (std::size_t b = 0; b < ranges_.size(); ++b) {
-        Vec3 lo = big, hi = -big;
+        Vec3 lo = big, hi = -big, damagedLo = big, damagedHi = -big;
         for (Index a = ranges_[b].first; a < ranges_[b].second; ++a) {
             const Vec3& xa = x[static_cast<std::size_t>(a)];
             if (!xa.allFinite()) continue;
             lo = lo.cwiseMin(xa);
             hi = hi.cwiseMax(xa);
+            if (anyDamaged_ && damaged_[static_cast<std::size_t>(a)]) {
+                damagedLo = damagedLo.cwiseMin(xa);
+                damagedHi = damagedHi.cwiseMax(xa);
+            }
         }
         boxLow_[b] = lo.array() - cellSize_;
         boxHigh_[b] = hi.array() + cellSize_;
+        damagedLow_[b] = damagedLo.array() - cellSize_;
+        damagedHigh_[b] = damagedHi.array() + cellSize_;
     }
+    const auto inside = [&](const Vec3& p, const Vec3& lo, const Vec3& hi) {
+        return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
+    };
     parallelFor(ref.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         std::uint8_t near = 0;
         for (std::size_t b = 0; b < ranges_.size() && !near; ++b) {
-            if (a >= ranges_[b].first && a < ranges_[b].second) continue;
-            near = (x[ia].array() >= boxLow_[b].array()).all() &&
-                   (x[ia].array() <= boxHigh_[b].array()).all();
+            const bool own = a >= ranges_[b].first && a < ranges_[b].second;
+            near = own ? anyDamaged_ && inside(x[ia], damagedLow_[b], damagedHigh_[b])
+                       : betweenBodies_ && inside(x[ia], boxLow_[b], boxHigh_[b]);
         }
         candidate_[ia] = near;
     });
@@ -150,9 +187,11 @@ void PenaltyContact::build(const std::vector<Vec3>& x) {
 }
 
 double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
-                                 std::vector<double>& frequency2) {
+                                 std::vector<double>& frequency2,
+                                 const std::vector<std::uint8_t>& bondIntact) {
     pairs_ = 0;
     if (!active_) return 0.0;
+    markDamaged(bondIntact);
     build(x);
     const Reference& ref = *ref_;
     const ContactShapes& shape = shapes_;
@@ -178,7 +217,13 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                     for (Index j = bucketStart_[bucket]; j < bucketStart_[bucket + 1]; ++j) {
                         const auto ib =
                             static_cast<std::size_t>(sorted_[static_cast<std::size_t>(j)]);
-                        if (ref.body[ib] == body || cell_[ib] != c) continue;
+                        if (cell_[ib] != c) continue;
+                        const bool sameBody = ref.body[ib] == body;
+                        if (sameBody
+                                ? !anyDamaged_ || ib == ia || !(damaged_[ia] || damaged_[ib]) ||
+                                      bonded(a, static_cast<Index>(ib), bondIntact)
+                                : !betweenBodies_)
+                            continue;
                         const Vec3 d = x[ia] - x[ib];
                         const double r2 = d.squaredNorm();
                         const double reach = shape.largestRadius[ia] + shape.largestRadius[ib];
@@ -187,18 +232,29 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                         const Vec3 n = d / r;
                         const Vec3 ua = shape.S[ia] * n, ub = shape.S[ib] * n;
                         const double na = ua.norm(), nb = ub.norm();
-                        const double gap = (1.0 / na + 1.0 / nb) - r;  // d_ab(n) − r
+                        double reachAB = 1.0 / na + 1.0 / nb;  // d_ab(n)
+                        // Parts of one body: no closer than their reference distance, so that
+                        // a crack's faces touch without force at rest (the ellipsoids of a
+                        // graded lattice may overlap a little there).
+                        const double apart = sameBody ? (ref.X[ia] - ref.X[ib]).norm() : reachAB;
+                        const bool ellipsoids = reachAB <= apart;
+                        reachAB = std::min(reachAB, apart);
+                        const double gap = reachAB - r;
                         if (!(gap > 0.0)) continue;
                         // h = −∂d_ab/∂n: the tangential part turns the force towards the
-                        // ellipsoids' normals, so that f = −∂U/∂x_a exactly.
-                        const Vec3 h = shape.S[ia].transpose() * ua / (na * na * na) +
-                                       shape.S[ib].transpose() * ub / (nb * nb * nb);
+                        // ellipsoids' normals, so that f = −∂U/∂x_a exactly (0 when the
+                        // reference distance is the contact distance).
+                        const Vec3 h = ellipsoids
+                                           ? Vec3(shape.S[ia].transpose() * ua / (na * na * na) +
+                                                  shape.S[ib].transpose() * ub / (nb * nb * nb))
+                                           : Vec3::Zero();
                         const double kb = stiffness_[ib];
                         const double kab = ka * kb / (ka + kb);        // springs in series
                         const Vec3 grad = n + (h - n.dot(h) * n) / r;  // −∂gap/∂x_a
                         const Vec3 fab = (kab * gap) * grad;
                         f += fab;
-                        byBody[rangeOfBody_[static_cast<std::size_t>(ref.body[ib])]] += fab;
+                        if (!sameBody)
+                            byBody[rangeOfBody_[static_cast<std::size_t>(ref.body[ib])]] += fab;
                         u += 0.25 * kab * gap * gap;  // half of the pair's ½ k gap²
                         // The spring's stiffness along −∂gap/∂x_a is k |∂gap/∂x_a|² (> k where
                         // the ellipsoids meet obliquely).
@@ -220,6 +276,10 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
 }
 
 void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
+    if (!betweenBodies_) {
+        out.clear();
+        return;
+    }
     const std::size_t bodies = ranges_.size();
     out.assign(bodies * bodies, Vec3::Zero());
     for (std::size_t i = 0; i < bodies; ++i)

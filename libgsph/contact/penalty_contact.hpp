@@ -11,6 +11,14 @@
 //   f_a = k_ab (d_ab − r) [n + (h − (n·h) n)/r] = −f_b,  h = −∂d_ab/∂n = Σ_{a,b} S^T S n/|S n|³,
 // k_ab = k_a k_b/(k_a + k_b), k_a = s m_a c_a²/ℓ_a² the particle's penalty stiffness
 // (contactStiffness). Frictionless between bodies (walls have friction).
+// Self-contact (ContactOptions::selfContact): the parts of one body that its broken bonds
+// have separated (fragments, a plug and the plate it leaves) meet by the same law. A pair of
+// one body is in it when at least one of the two has lost a bond and no intact bond joins them
+// (a bond's own pair force holds bonded particles), and its contact distance is
+// min(d_ab(n), |X_a − X_b|): never more than the pair's reference distance, so that a crack's
+// faces touch without force at rest (the ellipsoids of a graded lattice overlap a little), while
+// parts that come from afar meet at d_ab. The search then also covers the particles within
+// reach of the bounding box of their body's damaged particles.
 // Each particle gathers its own pairs in a fixed order (cells in a fixed order, particles by
 // index within a cell), so results do not depend on the thread count, and f_ab, f_ba are
 // computed from the same operands: f_a = −f_b bit for bit, Σ f = 0 to round-off.
@@ -34,6 +42,8 @@ struct ContactOptions {
     /// ω = √s c/ℓ (the lattice's own highest frequency is 2c/ℓ).
     double penalty = 4.0;
     double distance = 1.0;  ///< δ: the contact ellipsoid is δ × the cell's inscribed one
+    /// Contact between the parts of one body once broken bonds separate them (see above).
+    bool selfContact = false;
 };
 
 /// The particles' contact ellipsoids: S_a = (½δΔθ M_a)^{-1} and the largest semi-axis
@@ -55,8 +65,8 @@ std::vector<double> contactStiffness(const Reference& ref, const std::vector<dou
 class PenaltyContact {
   public:
     PenaltyContact() = default;
-    /// `stiffness`: k_a per particle (contactStiffness); `shapes`: contactShapes. Active only
-    /// with more than one body and options.betweenBodies.
+    /// `stiffness`: k_a per particle (contactStiffness); `shapes`: contactShapes. Active with
+    /// more than one body and options.betweenBodies, or with options.selfContact.
     PenaltyContact(const Reference& ref, std::vector<double> stiffness, ContactShapes shapes,
                    const ContactOptions& options);
 
@@ -64,8 +74,11 @@ class PenaltyContact {
 
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
     /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J].
+    /// `bondIntact` (State::bondIntact, per CSR pair; empty: no bond broken) decides the pairs
+    /// of self-contact.
     double addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
-                     std::vector<double>& frequency2);
+                     std::vector<double>& frequency2,
+                     const std::vector<std::uint8_t>& bondIntact = {});
 
     /// Pairs in contact at the last addForces (a diagnostic; each pair counted once).
     long pairsInContact() const { return pairs_; }
@@ -75,30 +88,39 @@ class PenaltyContact {
     /// Per ordered pair of bodies (i, j) (bodies in particle order), the force that j's
     /// particles exert on i's at the last addForces [N], into out[i·B + j] (B = bodies();
     /// out[i·B + i] = 0). Summed particle by particle in index order: independent of the thread
-    /// count, and out[i·B + j] = −out[j·B + i] to round-off (LS-DYNA's rcforc).
+    /// count, and out[i·B + j] = −out[j·B + i] to round-off (LS-DYNA's rcforc). Self-contact
+    /// forces are internal to a body and not in it; empty unless contact between bodies is on.
     void bodyPairForces(std::vector<Vec3>& out) const;
 
   private:
     using Cell = std::array<std::int64_t, 3>;
+    void markDamaged(const std::vector<std::uint8_t>& bondIntact);
     void markCandidates(const std::vector<Vec3>& x);
     void build(const std::vector<Vec3>& x);
+    bool bonded(Index a, Index b, const std::vector<std::uint8_t>& bondIntact) const;
     std::size_t bucketOf(const Cell& c) const;
 
     const Reference* ref_ = nullptr;
     ContactShapes shapes_;
     bool active_ = false;
+    bool betweenBodies_ = false;  ///< pairs of different bodies
+    bool selfContact_ = false;    ///< pairs of one body separated by broken bonds
+    bool anyDamaged_ = false;     ///< some particle has lost a bond (at the last addForces)
     std::vector<double> stiffness_;
     double cellSize_ = 0.0;
     std::vector<std::pair<Index, Index>> ranges_;  ///< per body: its particle range
     std::vector<std::size_t> rangeOfBody_;         ///< per body id: its entry of ranges_
     std::vector<Vec3> boxLow_, boxHigh_;           ///< per body: bounding box grown by the reach
-    std::vector<std::uint8_t> candidate_;          ///< per particle: within another body's box
-    std::vector<Cell> cell_;                       ///< per particle
-    std::vector<std::uint32_t> bucket_;            ///< per particle: its hash bucket
-    std::vector<Index> bucketStart_;               ///< CSR over buckets (size buckets + 1)
-    std::vector<Index> sorted_;                    ///< particles, bucket by bucket, by index within
-    std::vector<double> energy_;                   ///< per particle: half of each of its pairs' U
-    std::vector<std::int32_t> pairCount_;          ///< per particle: its pairs in contact
+    std::vector<std::uint8_t> candidate_;          ///< per particle: within another body's box, or
+                                           ///< (self-contact) its body's damaged particles' box
+    std::vector<std::uint8_t> damaged_;           ///< per particle: lost a bond (self-contact only)
+    std::vector<Vec3> damagedLow_, damagedHigh_;  ///< per body: damaged particles' box + reach
+    std::vector<Cell> cell_;                      ///< per particle
+    std::vector<std::uint32_t> bucket_;           ///< per particle: its hash bucket
+    std::vector<Index> bucketStart_;              ///< CSR over buckets (size buckets + 1)
+    std::vector<Index> sorted_;                   ///< particles, bucket by bucket, by index within
+    std::vector<double> energy_;                  ///< per particle: half of each of its pairs' U
+    std::vector<std::int32_t> pairCount_;         ///< per particle: its pairs in contact
     /// Per candidate particle a and body j: the force of j's particles on a (a·B + j) [N].
     std::vector<Vec3> forceByBody_;
     std::vector<double> partial_;  ///< scratch of deterministicSum
