@@ -167,6 +167,25 @@ int main(int argc, char** argv) {
     std::printf("particles            %.0f (%s), %.1f neighbours per particle, κ = %.2f\n", n,
                 layout.c_str(), pairs / n, kappa);
     std::printf("overset band         %zu particles (%.1f %%)\n", band, 100.0 * band / n);
+    std::size_t stencilParticles = 0, crossSpace = 0;
+    for (const StencilBlocks& body : sim.integrator().stressUpdate().blocks())
+        for (const ParticleBlock& block : body.blocks)
+            if (block.stencil != kNoStencil)
+                stencilParticles += static_cast<std::size_t>(block.size());
+    const Reference& reference = sim.reference();
+    for (Index a = 0; a < reference.size(); ++a) {
+        bool across = !reference.crossOffset.empty() &&
+                      reference.crossOffset[static_cast<std::size_t>(a) + 1] >
+                          reference.crossOffset[static_cast<std::size_t>(a)];
+        for (Index k = reference.pairs.begin(a); k < reference.pairs.end(a) && !across; ++k)
+            across = reference.space[static_cast<std::size_t>(
+                         reference.pairs.neighbor[static_cast<std::size_t>(k)])] !=
+                     reference.space[static_cast<std::size_t>(a)];
+        crossSpace += across;
+    }
+    std::printf(
+        "stencil blocks       %zu particles (%.1f %%); %zu with pairs across spaces (%.1f %%)\n",
+        stencilParticles, 100.0 * stencilParticles / n, crossSpace, 100.0 * crossSpace / n);
     std::printf("threads              %d\n", threads);
     std::printf("material             %s\n",
                 plastic ? "Johnson–Cook + damage (Weldox 460E)" : "hypo-elastic steel");
