@@ -21,7 +21,7 @@ const Keys kCommonKeys = {"model",        "density", "youngs_modulus", "poisson_
                           "bond_stretch", "notes",   "sources"};
 // Keys of a plastic solid besides its strength model's: the parts it composes
 // (libgsph/materials/plastic_solid.hpp).
-const Keys kPlasticPartKeys = {"eos", "damage", "damage_length"};
+const Keys kPlasticPartKeys = {"eos", "damage", "damage_length", "damage_size"};
 
 JohnsonCookParams readJohnsonCook(const TomlKeys& keys, const std::string& where);
 LinearHardeningParams readLinearHardening(const TomlKeys& keys, const std::string& where);
@@ -240,10 +240,17 @@ void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& e
             const std::vector<double> d = keys.numbers("damage", 5);
             parts.damage = JohnsonCookDamage{{d[0], d[1], d[2], d[3], d[4]}};
             parts.damage->length = keys.number("damage_length", 0.0, Sign::NonNegative);
-        } else if (keys.has("damage_length")) {
-            keys.fail("damage_length",
-                      "'damage_length' in " + where +
-                          " needs 'damage' (the Johnson–Cook constants it averages)");
+            parts.damage->referenceSize = keys.number("damage_size", 0.0, Sign::NonNegative);
+            if (parts.damage->nonlocal() && parts.damage->referenceSize > 0.0)
+                keys.fail("damage_size", "'damage_size' in " + where +
+                                             " and 'damage_length' exclude each other (two "
+                                             "regularizations of one damage)");
+        } else {
+            for (const char* key : {"damage_length", "damage_size"})
+                if (keys.has(key))
+                    keys.fail(key, "'" + std::string(key) + "' in " + where +
+                                       " needs 'damage' (the Johnson–Cook constants it "
+                                       "regularizes)");
         }
         parts.eos = [&keys, eos, &m] { return eos->build(keys, m.elastic); };
     }

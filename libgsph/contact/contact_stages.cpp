@@ -5,7 +5,8 @@ namespace gsph {
 
 StageReport PairContactStage::addForces(const State& state, ForceChannels& out) {
     StageReport report;
-    report.potential = contact_.addForces(state.x, out.force, out.frequency2, state.bondIntact);
+    report.potential =
+        contact_.addForces(state.x, out.force, out.frequency2, state.bondIntact, &state.F);
     return report;
 }
 

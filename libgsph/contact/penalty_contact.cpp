@@ -100,16 +100,18 @@ std::size_t PenaltyContact::bucketOf(const Cell& c) const {
     return static_cast<std::size_t>(h & (bucketStart_.size() - 3));
 }
 
-// Which particles have lost a bond (self-contact's pairs need one of them).
+// Which particles have lost a bond (self-contact's pairs need one of them), and which all.
 void PenaltyContact::markDamaged(const std::vector<std::uint8_t>& bondIntact) {
     const PairList& P = ref_->pairs;
     anyDamaged_ = false;
     if (!selfContact_ || bondIntact.empty()) return;
     parallelFor(ref_->size(), [&](Index a) {
-        std::uint8_t lost = 0;
-        for (Index k = P.begin(a); k < P.end(a) && !lost; ++k)
-            lost = bondIntact[static_cast<std::size_t>(k)] == 0;
-        damaged_[static_cast<std::size_t>(a)] = lost;
+        Index kept = 0;
+        for (Index k = P.begin(a); k < P.end(a); ++k)
+            kept += bondIntact[static_cast<std::size_t>(k)];
+        damaged_[static_cast<std::size_t>(a)] = kept == P.end(a) - P.begin(a) ? kIntact
+                                                : kept > 0                    ? kLostSome
+                                                                              : kIsolated;
     });
     anyDamaged_ = std::any_of(damaged_.begin(), damaged_.end(), [](std::uint8_t d) { return d; });
 }
@@ -188,10 +190,13 @@ void PenaltyContact::build(const std::vector<Vec3>& x) {
 
 double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
                                  std::vector<double>& frequency2,
-                                 const std::vector<std::uint8_t>& bondIntact) {
+                                 const std::vector<std::uint8_t>& bondIntact,
+                                 const std::vector<Mat3>* F) {
     pairs_ = 0;
     if (!active_) return 0.0;
     markDamaged(bondIntact);
+    if (anyDamaged_ && (F == nullptr || F->size() != x.size()))
+        throw InputError("self-contact needs the deformation gradients of the particles");
     build(x);
     const Reference& ref = *ref_;
     const ContactShapes& shape = shapes_;
@@ -233,10 +238,24 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                         const Vec3 ua = shape.S[ia] * n, ub = shape.S[ib] * n;
                         const double na = ua.norm(), nb = ub.norm();
                         double reachAB = 1.0 / na + 1.0 / nb;  // d_ab(n)
-                        // Parts of one body: no closer than their reference distance, so that
-                        // a crack's faces touch without force at rest (the ellipsoids of a
-                        // graded lattice may overlap a little there).
-                        const double apart = sameBody ? (ref.X[ia] - ref.X[ib]).norm() : reachAB;
+                        // Parts of one body: no farther than their reference distance, so
+                        // that a crack's faces touch without force at rest (the ellipsoids of
+                        // a graded lattice may overlap a little), nor than the distance an
+                        // isolated particle's frozen F gives the pair, so that crushed
+                        // material whose last bonds break does not spring apart.
+                        double apart = reachAB;
+                        if (sameBody) {
+                            const Vec3 dX = ref.X[ia] - ref.X[ib];
+                            apart = dX.norm();
+                            const bool isolatedA = damaged_[ia] == kIsolated;
+                            const bool isolatedB = damaged_[ib] == kIsolated;
+                            if (isolatedA || isolatedB) {
+                                const Mat3 Fab = isolatedA && isolatedB
+                                                     ? Mat3(0.5 * ((*F)[ia] + (*F)[ib]))
+                                                     : (*F)[isolatedA ? ia : ib];
+                                apart = std::min(apart, (Fab * dX).norm());
+                            }
+                        }
                         const bool ellipsoids = reachAB <= apart;
                         reachAB = std::min(reachAB, apart);
                         const double gap = reachAB - r;

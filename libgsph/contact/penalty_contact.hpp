@@ -15,15 +15,13 @@
 // have separated (fragments, a plug and the plate it leaves) meet by the same law. A pair of
 // one body is in it when at least one of the two has lost a bond and no intact bond joins them
 // (a bond's own pair force holds bonded particles), and its contact distance is
-// min(d_ab(n), |X_a − X_b|): never more than the pair's reference distance, so that a crack's
-// faces touch without force at rest (the ellipsoids of a graded lattice overlap a little), while
+// min(d_ab(n), |X_a − X_b|, |F̄ (X_a − X_b)|): never more than the pair's reference distance,
+// so that a crack's faces touch without force at rest (the ellipsoids of a graded lattice
+// overlap a little), nor than the distance the frozen F of an isolated particle (one with no
+// bond left: detached, failure/brittle_bonds.hpp) gives the pair (F̄ the mean over the pair's
+// isolated particles), so that crushed material whose last bonds break does not spring apart;
 // parts that come from afar meet at d_ab. The search then also covers the particles within
 // reach of the bounding box of their body's damaged particles.
-// Each particle gathers its own pairs in a fixed order (cells in a fixed order, particles by
-// index within a cell), so results do not depend on the thread count, and f_ab, f_ba are
-// computed from the same operands: f_a = −f_b bit for bit, Σ f = 0 to round-off.
-// Allocation-free once constructed. Outputs per particle: the force (added to the caller's),
-// a bound of the squared contact frequency ω_a² (for the stable step), and U.
 #pragma once
 
 #include <array>
@@ -75,10 +73,11 @@ class PenaltyContact {
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
     /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J].
     /// `bondIntact` (State::bondIntact, per CSR pair; empty: no bond broken) decides the pairs
-    /// of self-contact.
+    /// of self-contact, `F` (per particle) their contact distance.
     double addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
                      std::vector<double>& frequency2,
-                     const std::vector<std::uint8_t>& bondIntact = {});
+                     const std::vector<std::uint8_t>& bondIntact = {},
+                     const std::vector<Mat3>* F = nullptr);
 
     /// Pairs in contact at the last addForces (a diagnostic; each pair counted once).
     long pairsInContact() const { return pairs_; }
@@ -113,7 +112,10 @@ class PenaltyContact {
     std::vector<Vec3> boxLow_, boxHigh_;           ///< per body: bounding box grown by the reach
     std::vector<std::uint8_t> candidate_;          ///< per particle: within another body's box, or
                                            ///< (self-contact) its body's damaged particles' box
-    std::vector<std::uint8_t> damaged_;           ///< per particle: lost a bond (self-contact only)
+    /// Per particle (self-contact only): kIntact, kLostSome bonds, or kIsolated (none left: a
+    /// detached particle, its F frozen).
+    std::vector<std::uint8_t> damaged_;
+    static constexpr std::uint8_t kIntact = 0, kLostSome = 1, kIsolated = 2;
     std::vector<Vec3> damagedLow_, damagedHigh_;  ///< per body: damaged particles' box + reach
     std::vector<Cell> cell_;                      ///< per particle
     std::vector<std::uint32_t> bucket_;           ///< per particle: its hash bucket

@@ -96,6 +96,7 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     if constexpr (kHasHistory<Model>) {
         loadHistory<Model>(s.state, ia, point);
         if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
+        point.size = s.ref.spacing[ia];
     }
     model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
     s.state.F[ia] = F;

@@ -19,8 +19,20 @@ struct JohnsonCookDamage {
     /// ℓ [m] of the nonlocal average of the damage driver (failure/nonlocal_damage.hpp); 0:
     /// local damage, D = Σ Δε̄p/εf at the particle itself.
     double length = 0.0;
+    /// L0 [m] of the size regularization of the failure strain: a particle of size h fails at
+    /// εf L0/h, so that a band one particle wide dissipates per unit area what a band of width L0
+    /// with the constants' εf does (the band-width scaling of FE codes' erosion, the simpler
+    /// alternative to the nonlocal average); 0: off.
+    double referenceSize = 0.0;
 
     bool nonlocal() const { return length > 0.0; }
+
+    /// εf scaled to a particle of size h [m] (unchanged without a reference size, or h ≤ 0:
+    /// a material point without a particle).
+    double scaledToSize(double failureStrainValue, double size) const {
+        return referenceSize > 0.0 && size > 0.0 ? failureStrainValue * (referenceSize / size)
+                                                 : failureStrainValue;
+    }
 
     /// εf at triaxiality σ*, strain-rate ratio ε̇* = ε̇/ε̇0 and homologous temperature T*.
     /// May be ≤ 0 for constants with D1 < 0 at high triaxiality: the point then fails at once.

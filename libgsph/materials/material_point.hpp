@@ -28,6 +28,9 @@ struct MaterialPoint {
     /// In only: the nonlocal average ω̄ of the drivers at t_n (failure/nonlocal_damage.hpp);
     /// read by models with nonlocal damage, D = min(1, max(D, ω̄)).
     double averagedDriver = 0.0;
+    /// In only: the particle's size h, its smallest reference spacing [m] (0: a material point
+    /// without a particle); read by damage with a reference size (JohnsonCookDamage).
+    double size = 0.0;
     // What this update dissipated, per unit current volume [J/m³] (out only).
     double plasticWork = 0.0;        ///< Δw_p
     double damageDissipation = 0.0;  ///< elastic energy lost when the point failed (D reached 1)

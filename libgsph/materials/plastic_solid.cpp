@@ -81,8 +81,10 @@ void PlasticSolid<Strength>::update(MaterialPoint& p, const Mat3& D, const Mat3&
         if (dEps > 0.0) {
             const double sigmaEq = std::sqrt(1.5 * s.squaredNorm());
             const double triaxiality = sigmaEq > 0.0 ? -pressure / sigmaEq : 0.0;
-            failureStrain = damage_->failureStrain(
-                triaxiality, strainRate / strength_.referenceStrainRate(), Tstar);
+            failureStrain = damage_->scaledToSize(
+                damage_->failureStrain(triaxiality, strainRate / strength_.referenceStrainRate(),
+                                       Tstar),
+                p.size);
         }
         if (nonlocal) {
             if (dEps > 0.0) p.damageDriver += damage_->driverIncrement(dEps, failureStrain);

@@ -144,6 +144,21 @@ TEST(MaterialLibrary, BadMaterialFilesNameTheirLine) {
     EXPECT_EQ(damage->length, 1.5e-3);
     weldox.replace(weldox.find("1.5e-3"), 6, "-1e-3");
     expectError(weldox, "8:", "'damage_length' in material 'bad' must be");
+    // The size regularization: read, needs the damage, excludes the nonlocal average.
+    std::string sized(
+        (std::istreambuf_iterator<char>(std::ifstream(kLibrary / "weldox_460e.toml").rdbuf())), {});
+    sized.insert(sized.find("yield_stress"), "damage_size = 1e-3\n");
+    write(dir / "sized.toml", sized);
+    const solver::MaterialSpec sizedSpec = solver::readMaterialFile(dir / "sized.toml");
+    ASSERT_TRUE(sizedSpec.material);
+    EXPECT_EQ(damageModel(*sizedSpec.material)->referenceSize, 1e-3);
+    std::string sizeAlone = copper;
+    sizeAlone.insert(sizeAlone.find("yield_stress"), "damage_size = 1e-3\n");
+    expectError(sizeAlone, "8:", "'damage_size' in material 'bad' needs 'damage'");
+    std::string both = sized;
+    both.insert(both.find("yield_stress"), "damage_length = 1e-3\n");
+    expectError(both,
+                "8:", "'damage_size' in material 'bad' and 'damage_length' exclude each other");
 }
 
 TEST(MaterialPointCli, CopperInUniaxialStressFollowsTheClosedForm) {

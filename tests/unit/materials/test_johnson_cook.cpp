@@ -166,6 +166,35 @@ TEST(JohnsonCook, DamageReachesOneWhereTheFailureStrainSays) {
     std::printf("[johnson-cook] damage: failed at ε̄p = %.4f, εf = %.4f\n", failedAt, ef);
 }
 
+// The size regularization (damage_size = L0): a particle of size h fails at εf L0/h. Points
+// driven alike by an isochoric stretch: one of size L0 fails where one without a size does (to
+// the bit), one of size L0/2 at twice that plastic strain (to the step's increment).
+TEST(JohnsonCook, SizeRegularizedDamageFailsAtTheScaledStrain) {
+    JohnsonCookDamage damage = weldoxDamage(0.0);
+    damage.referenceSize = 1e-3;
+    const JohnsonCook model = copper(0.0, damage);
+    const double rate = 100.0, dt = 1e-6;  // Δε̄p ≈ 1e-4 per step
+    const Mat3 D = rate * Vec3(1.0, -0.5, -0.5).asDiagonal().toDenseMatrix();
+    const auto failedAt = [&](double size) {
+        MaterialPoint p;
+        p.density = kCopper.density;
+        p.size = size;
+        for (int i = 0; i < 100000; ++i) {
+            model.update(p, D, Mat3::Zero(), dt);
+            if (p.damage >= 1.0) return p.plasticStrain;
+        }
+        return -1.0;
+    };
+    const double plain = failedAt(0.0), atL0 = failedAt(1e-3), half = failedAt(0.5e-3);
+    std::printf(
+        "[johnson-cook] size-regularized damage: fails at ε̄p = %.5f (no size), %.5f "
+        "(h = L0), %.5f (h = L0/2: ratio %.5f)\n",
+        plain, atL0, half, half / atL0);
+    ASSERT_GT(plain, 0.0);
+    EXPECT_EQ(atL0, plain);
+    EXPECT_NEAR(half / atL0, 2.0, 2e-4);
+}
+
 TEST(JohnsonCook, DamageWithHeatingMatchesTheIntegralOfTheFailureStrain) {
     // With adiabatic heating and D5 ≠ 0, εf changes along the path: D = ∫ dε̄p/εf(T), the
     // integral taken by the trapezoidal rule over the output rows.
