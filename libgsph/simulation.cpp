@@ -100,6 +100,13 @@ void Simulation::resume(State state, const std::string& source) {
     expected.wallForce.assign(walls_.size(), Vec3::Zero());
     if (contactBetweenBodies(options_.contact, bodies_.size()))
         expected.contactForce.assign(bodies_.size() * bodies_.size(), Vec3::Zero());
+    if (options_.contact.selfContact) {
+        expected.contactSeparation.assign(expected.bondIntact.size(), 0.0);
+        // A state saved without self-contact has measured no separation: zeros (the pairs'
+        // current distances are taken at their next evaluation).
+        if (state.contactSeparation.empty())
+            state.contactSeparation.assign(expected.bondIntact.size(), 0.0);
+    }
     checkStateShape(state, expected, source);
     state_ = std::move(state);
     makeIntegrator();

@@ -5,8 +5,8 @@ namespace gsph {
 
 StageReport PairContactStage::addForces(const State& state, ForceChannels& out) {
     StageReport report;
-    report.potential =
-        contact_.addForces(state.x, out.force, out.frequency2, state.bondIntact, &state.F);
+    report.potential = contact_.addForces(state.x, out.force, out.frequency2, state.bondIntact,
+                                          state.contactSeparation);
     return report;
 }
 

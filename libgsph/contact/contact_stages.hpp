@@ -23,8 +23,12 @@ class PairContactStage final : public ForceStage {
     std::string name() const override { return "contact between particles"; }
     StageNeeds needs() const override { return {.frequency2 = true}; }
     StageReport addForces(const State& state, ForceChannels& out) override;
-    /// Per ordered pair of bodies, the force between them: State::contactForce (history).
-    void record(State& state) const override { contact_.bodyPairForces(state.contactForce); }
+    /// Per ordered pair of bodies, the force between them: State::contactForce (history); with
+    /// self-contact the broken pairs' separations (State::contactSeparation).
+    void record(State& state) const override {
+        contact_.bodyPairForces(state.contactForce);
+        contact_.recordSeparations(state.x, state.bondIntact, state.contactSeparation);
+    }
     const PenaltyContact& contact() const { return contact_; }
 
   private:

@@ -100,28 +100,47 @@ std::size_t PenaltyContact::bucketOf(const Cell& c) const {
     return static_cast<std::size_t>(h & (bucketStart_.size() - 3));
 }
 
-// Which particles have lost a bond (self-contact's pairs need one of them), and which all.
+// Which particles have lost a bond (self-contact's pairs need one of them).
 void PenaltyContact::markDamaged(const std::vector<std::uint8_t>& bondIntact) {
     const PairList& P = ref_->pairs;
     anyDamaged_ = false;
     if (!selfContact_ || bondIntact.empty()) return;
     parallelFor(ref_->size(), [&](Index a) {
-        Index kept = 0;
-        for (Index k = P.begin(a); k < P.end(a); ++k)
-            kept += bondIntact[static_cast<std::size_t>(k)];
-        damaged_[static_cast<std::size_t>(a)] = kept == P.end(a) - P.begin(a) ? kIntact
-                                                : kept > 0                    ? kLostSome
-                                                                              : kIsolated;
+        std::uint8_t lost = 0;
+        for (Index k = P.begin(a); k < P.end(a) && !lost; ++k)
+            lost = bondIntact[static_cast<std::size_t>(k)] == 0;
+        damaged_[static_cast<std::size_t>(a)] = lost;
     });
     anyDamaged_ = std::any_of(damaged_.begin(), damaged_.end(), [](std::uint8_t d) { return d; });
 }
 
-// Whether an intact bond joins a and b (a's list is sorted by neighbour).
-bool PenaltyContact::bonded(Index a, Index b, const std::vector<std::uint8_t>& bondIntact) const {
+// The pair (a, b) of a's list, or −1 if b is not a's neighbour (a's list is sorted).
+Index PenaltyContact::pairOf(Index a, Index b) const {
     const PairList& P = ref_->pairs;
     const auto first = P.neighbor.begin() + P.begin(a), last = P.neighbor.begin() + P.end(a);
     const auto it = std::lower_bound(first, last, b);
-    return it != last && *it == b && bondIntact[static_cast<std::size_t>(it - P.neighbor.begin())];
+    return it != last && *it == b ? static_cast<Index>(it - P.neighbor.begin()) : -1;
+}
+
+void PenaltyContact::recordSeparations(const std::vector<Vec3>& x,
+                                       const std::vector<std::uint8_t>& bondIntact,
+                                       std::vector<double>& separation) const {
+    if (!selfContact_) return;
+    const PairList& P = ref_->pairs;
+    if (separation.size() != bondIntact.size()) separation.assign(bondIntact.size(), 0.0);
+    if (!anyDamaged_) return;
+    const Reference& ref = *ref_;
+    parallelFor(ref.size(), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        if (!damaged_[ia]) return;
+        for (Index k = P.begin(a); k < P.end(a); ++k) {
+            const auto ik = static_cast<std::size_t>(k);
+            if (bondIntact[ik]) continue;
+            const auto b = static_cast<std::size_t>(P.neighbor[ik]);
+            separation[ik] = std::min((ref.X[ia] - ref.X[b]).norm(),
+                                      std::max(separation[ik], (x[ia] - x[b]).norm()));
+        }
+    });
 }
 
 // Which particles can touch another body at all: those inside another body's bounding box
@@ -191,12 +210,10 @@ void PenaltyContact::build(const std::vector<Vec3>& x) {
 double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
                                  std::vector<double>& frequency2,
                                  const std::vector<std::uint8_t>& bondIntact,
-                                 const std::vector<Mat3>* F) {
+                                 const std::vector<double>& separation) {
     pairs_ = 0;
     if (!active_) return 0.0;
     markDamaged(bondIntact);
-    if (anyDamaged_ && (F == nullptr || F->size() != x.size()))
-        throw InputError("self-contact needs the deformation gradients of the particles");
     build(x);
     const Reference& ref = *ref_;
     const ContactShapes& shape = shapes_;
@@ -224,11 +241,13 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                             static_cast<std::size_t>(sorted_[static_cast<std::size_t>(j)]);
                         if (cell_[ib] != c) continue;
                         const bool sameBody = ref.body[ib] == body;
-                        if (sameBody
-                                ? !anyDamaged_ || ib == ia || !(damaged_[ia] || damaged_[ib]) ||
-                                      bonded(a, static_cast<Index>(ib), bondIntact)
-                                : !betweenBodies_)
+                        if (sameBody ? !anyDamaged_ || ib == ia || !(damaged_[ia] || damaged_[ib])
+                                     : !betweenBodies_)
                             continue;
+                        // A pair of one body that was a's neighbour: its bond, if intact, holds
+                        // the pair; if broken, the pair's separation caps its contact distance.
+                        const Index bond = sameBody ? pairOf(a, static_cast<Index>(ib)) : -1;
+                        if (bond >= 0 && bondIntact[static_cast<std::size_t>(bond)]) continue;
                         const Vec3 d = x[ia] - x[ib];
                         const double r2 = d.squaredNorm();
                         const double reach = shape.largestRadius[ia] + shape.largestRadius[ib];
@@ -238,23 +257,17 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                         const Vec3 ua = shape.S[ia] * n, ub = shape.S[ib] * n;
                         const double na = ua.norm(), nb = ub.norm();
                         double reachAB = 1.0 / na + 1.0 / nb;  // d_ab(n)
-                        // Parts of one body: no farther than their reference distance, so
-                        // that a crack's faces touch without force at rest (the ellipsoids of
-                        // a graded lattice may overlap a little), nor than the distance an
-                        // isolated particle's frozen F gives the pair, so that crushed
-                        // material whose last bonds break does not spring apart.
+                        // A broken bond: no farther than the largest distance the pair has had
+                        // since it broke (this one included), capped at its reference distance,
+                        // so that a bond that breaks in compressed material stores no energy and
+                        // a crack's faces at rest touch without force.
                         double apart = reachAB;
-                        if (sameBody) {
-                            const Vec3 dX = ref.X[ia] - ref.X[ib];
-                            apart = dX.norm();
-                            const bool isolatedA = damaged_[ia] == kIsolated;
-                            const bool isolatedB = damaged_[ib] == kIsolated;
-                            if (isolatedA || isolatedB) {
-                                const Mat3 Fab = isolatedA && isolatedB
-                                                     ? Mat3(0.5 * ((*F)[ia] + (*F)[ib]))
-                                                     : (*F)[isolatedA ? ia : ib];
-                                apart = std::min(apart, (Fab * dX).norm());
-                            }
+                        if (bond >= 0) {
+                            const double seen =
+                                separation.empty()
+                                    ? r
+                                    : std::max(separation[static_cast<std::size_t>(bond)], r);
+                            apart = std::min((ref.X[ia] - ref.X[ib]).norm(), seen);
                         }
                         const bool ellipsoids = reachAB <= apart;
                         reachAB = std::min(reachAB, apart);

@@ -14,14 +14,15 @@
 // Self-contact (ContactOptions::selfContact): the parts of one body that its broken bonds
 // have separated (fragments, a plug and the plate it leaves) meet by the same law. A pair of
 // one body is in it when at least one of the two has lost a bond and no intact bond joins them
-// (a bond's own pair force holds bonded particles), and its contact distance is
-// min(d_ab(n), |X_a − X_b|, |F̄ (X_a − X_b)|): never more than the pair's reference distance,
-// so that a crack's faces touch without force at rest (the ellipsoids of a graded lattice
-// overlap a little), nor than the distance the frozen F of an isolated particle (one with no
-// bond left: detached, failure/brittle_bonds.hpp) gives the pair (F̄ the mean over the pair's
-// isolated particles), so that crushed material whose last bonds break does not spring apart;
-// parts that come from afar meet at d_ab. The search then also covers the particles within
-// reach of the bounding box of their body's damaged particles.
+// (a bond's own pair force holds bonded particles). For a pair whose bond broke, the contact
+// distance is min(d_ab(n), |X_a − X_b|, s_ab), s_ab the largest distance the pair has had since
+// the bond broke (this evaluation's included; State::contactSeparation): a bond that breaks in
+// compressed material stores no energy at the break (the first perforation runs, capped at the
+// reference distance alone, blew up), the faces of a crack at rest touch without force (the
+// ellipsoids of a graded lattice overlap a little), and the contact distance grows back only
+// while the pair is apart, so U is a potential of x. Pairs that never shared a bond meet at
+// d_ab. The search then also covers the particles within reach of the bounding box of their
+// body's damaged particles.
 #pragma once
 
 #include <array>
@@ -73,11 +74,17 @@ class PenaltyContact {
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
     /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J].
     /// `bondIntact` (State::bondIntact, per CSR pair; empty: no bond broken) decides the pairs
-    /// of self-contact, `F` (per particle) their contact distance.
+    /// of self-contact, `separation` (State::contactSeparation; empty: none measured) caps
+    /// their contact distance.
     double addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
                      std::vector<double>& frequency2,
                      const std::vector<std::uint8_t>& bondIntact = {},
-                     const std::vector<Mat3>* F = nullptr);
+                     const std::vector<double>& separation = {});
+    /// With self-contact, after addForces at the same x: raises each broken pair's separation
+    /// to its current distance, capped at its reference distance (sized to the pairs on first
+    /// use; particles write only their own pairs).
+    void recordSeparations(const std::vector<Vec3>& x, const std::vector<std::uint8_t>& bondIntact,
+                           std::vector<double>& separation) const;
 
     /// Pairs in contact at the last addForces (a diagnostic; each pair counted once).
     long pairsInContact() const { return pairs_; }
@@ -96,7 +103,7 @@ class PenaltyContact {
     void markDamaged(const std::vector<std::uint8_t>& bondIntact);
     void markCandidates(const std::vector<Vec3>& x);
     void build(const std::vector<Vec3>& x);
-    bool bonded(Index a, Index b, const std::vector<std::uint8_t>& bondIntact) const;
+    Index pairOf(Index a, Index b) const;
     std::size_t bucketOf(const Cell& c) const;
 
     const Reference* ref_ = nullptr;
@@ -112,10 +119,7 @@ class PenaltyContact {
     std::vector<Vec3> boxLow_, boxHigh_;           ///< per body: bounding box grown by the reach
     std::vector<std::uint8_t> candidate_;          ///< per particle: within another body's box, or
                                            ///< (self-contact) its body's damaged particles' box
-    /// Per particle (self-contact only): kIntact, kLostSome bonds, or kIsolated (none left: a
-    /// detached particle, its F frozen).
-    std::vector<std::uint8_t> damaged_;
-    static constexpr std::uint8_t kIntact = 0, kLostSome = 1, kIsolated = 2;
+    std::vector<std::uint8_t> damaged_;           ///< per particle: lost a bond (self-contact only)
     std::vector<Vec3> damagedLow_, damagedHigh_;  ///< per body: damaged particles' box + reach
     std::vector<Cell> cell_;                      ///< per particle
     std::vector<std::uint32_t> bucket_;           ///< per particle: its hash bucket

@@ -174,7 +174,8 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
         const std::string dataset = kStateGroup + field.name;
         if (field.checkpointSinceMinor > 0 && !f.exists(dataset)) {  // a file older than it
             using T = typename std::decay_t<decltype(array)>::value_type;
-            if constexpr (std::is_same_v<T, double>) array.assign(c.state.x.size(), 0.0);
+            if constexpr (std::is_same_v<T, double>)
+                if (field.extent == Extent::Particle) array.assign(c.state.x.size(), 0.0);
             return;
         }
         // A 3.0 checkpoint names some arrays otherwise (Field::checkpoint30Name).

@@ -31,9 +31,10 @@ namespace gsph {
 inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
 /// 3.0: the contact force between each pair of bodies (/state/contact_force). 3.1: the arrays
 /// carry `units`, the stress is /state/stress as in snapshots (3.0's /state/cauchy is read), and
-/// /state/damage_driver holds nonlocal damage's driver (a 3.0 file reads it as zeros).
+/// /state/damage_driver holds nonlocal damage's driver (a 3.0 file reads it as zeros). 3.2:
+/// /state/contact_separation of self-contact (an older file has none: read as empty).
 inline constexpr int kCheckpointFormatMajor = 3;
-inline constexpr int kCheckpointFormatMinor = 1;
+inline constexpr int kCheckpointFormatMinor = 2;
 
 /// A file the run was built from: a restart refuses to continue if its bytes changed.
 struct CheckpointInput {

@@ -78,6 +78,13 @@ inline constexpr Field kPlasticWork{"plastic_work", "J", Extent::Particle, kChec
 inline constexpr Field kBondIntact{"bond_intact", "1", Extent::Pair, kCheckpoint};
 inline constexpr Field kWallForce{"wall_force", "N", Extent::Wall, kCheckpoint};
 inline constexpr Field kContactForce{"contact_force", "N", Extent::BodyPair, kCheckpoint};
+/// Per CSR pair of a broken bond in a run with self-contact: the largest distance the pair has
+/// had since the bond broke, capped at its reference distance (contact/penalty_contact.hpp).
+inline constexpr Field kContactSeparation{.name = "contact_separation",
+                                          .unit = "m",
+                                          .extent = Extent::Pair,
+                                          .savedIn = kCheckpoint,
+                                          .checkpointSinceMinor = 2};
 
 // The reference's fields a snapshot adds (io/snapshot.hpp).
 inline constexpr Field kReferencePosition{"X", "m", Extent::Particle, kSnapshot};

@@ -71,6 +71,11 @@ struct State {
     /// of j's particles on i's through the contact between bodies at the last force evaluation
     /// [N] (history rows; empty without contact between bodies).
     std::vector<Vec3> contactForce;
+    /// Per pair of Reference::pairs (CSR order), with self-contact: the largest distance a pair
+    /// whose bond broke has had since, capped at its reference distance [m] (0 while the bond
+    /// holds or before it was first measured; contact/penalty_contact.hpp); empty without
+    /// self-contact.
+    std::vector<double> contactSeparation;
     EnergyLedger ledger;
 
     /// Calls visit(field, array) for every array of the state, in a fixed order, with its entry
@@ -139,7 +144,8 @@ struct State {
                           std::pair{&fields::kPlasticWork, &State::plasticWork},
                           std::pair{&fields::kBondIntact, &State::bondIntact},
                           std::pair{&fields::kWallForce, &State::wallForce},
-                          std::pair{&fields::kContactForce, &State::contactForce}};
+                          std::pair{&fields::kContactForce, &State::contactForce},
+                          std::pair{&fields::kContactSeparation, &State::contactSeparation}};
     }
 
   public:
