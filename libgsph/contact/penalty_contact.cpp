@@ -256,12 +256,12 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                         const Vec3 n = d / r;
                         const Vec3 ua = shape.S[ia] * n, ub = shape.S[ib] * n;
                         const double na = ua.norm(), nb = ub.norm();
-                        double reachAB = 1.0 / na + 1.0 / nb;  // d_ab(n)
+                        double contactDistance = 1.0 / na + 1.0 / nb;  // d_ab(n)
                         // A broken bond: no farther than the largest distance the pair has had
                         // since it broke (this one included), capped at its reference distance,
                         // so that a bond that breaks in compressed material stores no energy and
                         // a crack's faces at rest touch without force.
-                        double apart = reachAB;
+                        double apart = contactDistance;
                         if (bond >= 0) {
                             const double seen =
                                 separation.empty()
@@ -269,9 +269,9 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                                     : std::max(separation[static_cast<std::size_t>(bond)], r);
                             apart = std::min((ref.X[ia] - ref.X[ib]).norm(), seen);
                         }
-                        const bool ellipsoids = reachAB <= apart;
-                        reachAB = std::min(reachAB, apart);
-                        const double gap = reachAB - r;
+                        const bool ellipsoids = contactDistance <= apart;
+                        contactDistance = std::min(contactDistance, apart);
+                        const double gap = contactDistance - r;
                         if (!(gap > 0.0)) continue;
                         // h = −∂d_ab/∂n: the tangential part turns the force towards the
                         // ellipsoids' normals, so that f = −∂U/∂x_a exactly (0 when the
