@@ -488,7 +488,7 @@ TEST(SolveCli, HistoryHasEachBodysEnergiesAndMomentum) {
     std::ofstream(dir / "two.toml")
         << "[run]\nparticles = \"particles.h5\"\nend_time = 1.2e-5\noutput_interval = 3.0e-6\n"
            "history_interval = 5.0e-7\n"
-           "[contact]\nbetween_bodies = true\npenalty = 4.0\n"
+           "[contact]\nbetween_bodies = true\nself_contact = true\npenalty = 4.0\n"
            "[[material]]\nname = \"copper\"\nfile = \"" +
                (kSource / "materials/ofhc_copper.toml").string() +
                "\"\n"
