@@ -239,10 +239,10 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                     for (Index j = bucketStart_[bucket]; j < bucketStart_[bucket + 1]; ++j) {
                         const auto ib =
                             static_cast<std::size_t>(sorted_[static_cast<std::size_t>(j)]);
-                        if (cell_[ib] != c) continue;
                         const bool sameBody = ref.body[ib] == body;
-                        if (sameBody ? !anyDamaged_ || ib == ia || !(damaged_[ia] || damaged_[ib])
-                                     : !betweenBodies_)
+                        if ((sameBody ? !anyDamaged_ || ib == ia || !(damaged_[ia] || damaged_[ib])
+                                      : !betweenBodies_) ||
+                            cell_[ib] != c)
                             continue;
                         // A pair of one body that was a's neighbour: its bond, if intact, holds
                         // the pair; if broken, the pair's separation caps its contact distance.
