@@ -258,17 +258,14 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
                         const double na = ua.norm(), nb = ub.norm();
                         double contactDistance = 1.0 / na + 1.0 / nb;  // d_ab(n)
                         // A broken bond: no farther than the largest distance the pair has had
-                        // since it broke (this one included), capped at its reference distance,
-                        // so that a bond that breaks in compressed material stores no energy and
-                        // a crack's faces at rest touch without force.
+                        // since it broke (this one included; recordSeparations caps it at the
+                        // reference distance), so that a bond that breaks in compressed material
+                        // stores no energy and a crack's faces at rest touch without force.
                         double apart = contactDistance;
-                        if (bond >= 0) {
-                            const double seen =
-                                separation.empty()
-                                    ? r
-                                    : std::max(separation[static_cast<std::size_t>(bond)], r);
-                            apart = std::min((ref.X[ia] - ref.X[ib]).norm(), seen);
-                        }
+                        if (bond >= 0)
+                            apart = separation.empty()
+                                        ? r
+                                        : std::max(separation[static_cast<std::size_t>(bond)], r);
                         const bool ellipsoids = contactDistance <= apart;
                         contactDistance = std::min(contactDistance, apart);
                         const double gap = contactDistance - r;
