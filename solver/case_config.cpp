@@ -32,7 +32,7 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const TomlKeys r(file, *run, "[run]",
                      {"particles", "end_time", "output_interval", "history_interval", "cfl",
                       "kappa", "mass", "viscosity", "viscosity_switch", "hourglass",
-                      "checkpoint_interval", "min_dt_ratio", "gravity"});
+                      "checkpoint_interval", "min_dt_ratio", "gravity", "dimension"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -48,6 +48,15 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     if (mass != "quadrature" && mass != "mesh")
         r.fail("mass", "'mass' in [run] must be \"quadrature\" or \"mesh\", got '" + mass + "'");
     c.massBasis = mass == "mesh" ? MassBasis::MeshVolume : MassBasis::QuadratureVolume;
+    c.dimension = r.text("dimension", "");
+    if (!c.dimension.empty() && c.dimension != "3d" && c.dimension != "plane_strain" &&
+        c.dimension != "axisymmetric")
+        r.fail("dimension",
+               "'dimension' in [run] must be \"3d\", \"plane_strain\" or \"axisymmetric\", got '" +
+                   c.dimension + "'");
+    c.dimensionLine = run->get("dimension")
+                          ? static_cast<int>(run->get("dimension")->source().begin.line)
+                          : r.line();
     if (r.has("viscosity")) {
         const std::vector<double> beta = r.numbers("viscosity", 2);
         if (beta[0] < 0.0 || beta[1] < 0.0) r.fail("viscosity", "'viscosity' in [run] must be ≥ 0");

@@ -104,6 +104,10 @@ struct CaseConfig {
     double kappa = 1.2;
     /// [run] mass: "quadrature" (ρ0 ω det M, default) or "mesh" (ρ0 × the cell's meshed volume).
     MassBasis massBasis = MassBasis::QuadratureVolume;
+    /// [run] dimension: "3d", "plane_strain" or "axisymmetric"; empty: the particle file's
+    /// (a 2-D file runs in plane strain). Checked against the file by the run.
+    std::string dimension;
+    int dimensionLine = 0;  ///< where it is set (for messages)
     ViscosityCoefficients viscosity = kDefaultViscosity;
     double hourglass = 0.1;
     /// [s] of simulated time between checkpoints (default: output_interval; 0 = only on a

@@ -17,6 +17,7 @@
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
 #include "io/snapshot.hpp"
+#include "particles/axisymmetry.hpp"
 #include "probes.hpp"
 #include "progress.hpp"
 #include "reference/reference_builder.hpp"
@@ -404,6 +405,15 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
                              c.contact.selfContact};
     Reference ref = buildReference(file, bodies.density, c.kappa);
     ref.massBasis = c.massBasis;
+    if (!c.dimension.empty()) {
+        const int wanted = c.dimension == "3d" ? 3 : 2;
+        if (wanted != file.dimension)
+            throw InputError(c.caseFile.string() + ":" + std::to_string(c.dimensionLine) +
+                             ": [run] dimension = \"" + c.dimension + "\" needs a " +
+                             std::to_string(wanted) + "-D particle file, and " +
+                             c.particles.string() + " is " + std::to_string(file.dimension) + "-D");
+        ref.dim.axisymmetric = c.dimension == "axisymmetric";
+    }
     auto sim =
         std::make_unique<Simulation>(std::move(ref), std::move(bodies.materials), solverOptions);
     for (VelocityConstraint& vc : sets.constraints) sim->constrain(std::move(vc));
@@ -439,7 +449,8 @@ std::string sizeLine(const Reference& ref) {
     for (Index a = 0; a < ref.size(); ++a) {
         const auto ia = static_cast<std::size_t>(a);
         totalMass += ref.mass[ia];
-        meshMass += ref.density[ia] * ref.volume[ia];
+        meshMass +=
+            ref.density[ia] * ref.volume[ia] * (ref.dim.axisymmetric ? ringFactor(ref.X[ia]) : 1.0);
     }
     char line[512];
     std::snprintf(line, sizeof line,

@@ -23,7 +23,9 @@ namespace gsph {
 struct PressureLoad {
     std::string name;              ///< the particle set's name (for messages)
     std::vector<Index> particles;  ///< sorted, unique
-    std::vector<Vec3> area;        ///< per particle of the set: A_a [m²] (per metre in 2-D)
+    /// per particle of the set: A_a [m²] (per metre in 2-D; an axisymmetric run takes them per
+    /// metre of the (r, z) plane and makes them rings, 2πR A_a)
+    std::vector<Vec3> area;
     /// (t [s], p [Pa]) with t strictly increasing; one point: a constant pressure.
     std::vector<std::pair<double, double>> curve;
 

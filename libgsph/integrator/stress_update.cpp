@@ -9,6 +9,7 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "kinematics/deformation_gradient.hpp"
+#include "particles/axisymmetry.hpp"
 
 namespace gsph {
 namespace {
@@ -83,11 +84,12 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
                      const Mat3& gradV) {
     const auto ia = static_cast<std::size_t>(a);
     const Mat3& G = s.G[ia];
-    const Mat3 Fdot = gradV * G.transpose();
+    Mat3 Fdot = gradV * G.transpose();
+    Mat3 F = gradX * G.transpose() + s.outOfPlane;
+    if (s.ref.dim.axisymmetric) setHoopStretch(s.ref.X[ia], s.state.x[ia], s.state.v[ia], F, Fdot);
     // A particle that lost bonds in a body whose bonds break by damage integrates F in time
     // (failure/brittle_bonds.hpp, integratesF): F over the surviving bonds would jump.
-    const Mat3 F = s.bonds.integratesF(a) ? Mat3(s.state.F[ia] + s.dt * Fdot)
-                                          : Mat3(gradX * G.transpose() + s.outOfPlane);
+    if (s.bonds.integratesF(a)) F = s.state.F[ia] + s.dt * Fdot;
     const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
     MaterialPoint point;
     point.cauchy = s.state.cauchy[ia];

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "forces/hoop_stress_stage.hpp"
 #include "forces/internal_force_stage.hpp"
 #include "integrator/power_ledger.hpp"
 #include "integrator/time_step.hpp"
@@ -70,6 +71,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     stages_.push_back(std::make_shared<InternalForceStage>(
         ref, std::move(youngsModulus), stress_.fields(), stress_.factors(), stress_.blocks(),
         options_.viscosity, options_.hourglass, bonds_));
+    if (ref.dim.axisymmetric) stages_.push_back(std::make_shared<HoopStressStage>(ref));
     for (auto& stage :
          makeContactStages(ref, pWaveSpeed2, bodies_.size(), options_.contact, std::move(walls)))
         stages_.push_back(std::move(stage));

@@ -27,6 +27,8 @@ bool validSetName(const std::string& name) {
 }
 
 void validateSpaces(const ParticleFile& f) {
+    if (f.dimension != 2 && f.dimension != 3)
+        invalid("dimension " + std::to_string(f.dimension) + " is neither 2 nor 3");
     for (std::size_t s = 0; s < f.spaces.size(); ++s) {
         const LatticeSpace& sp = f.spaces[s];
         if (!(sp.dtheta > 0.0) || !std::isfinite(sp.dtheta)) {
@@ -35,6 +37,10 @@ void validateSpaces(const ParticleFile& f) {
         for (int c : sp.cells) {
             if (c < 1) invalid("space " + std::to_string(s) + " has an empty cell range");
         }
+        if (f.dimension == 2 && (sp.cells[2] != 1 || sp.periodic[2]))
+            invalid("space " + std::to_string(s) +
+                    " of a 2-D file has more than one cell along "
+                    "its third index");
     }
 }
 
@@ -63,6 +69,8 @@ std::vector<Index> validateOrdering(const ParticleFile& f) {
         if (!f.X[a].allFinite() || !f.theta[a].allFinite()) {
             invalid("particle " + std::to_string(a) + " has a non-finite position");
         }
+        if (f.dimension == 2 && (f.X[a][2] != 0.0 || f.theta[a][2] != 0.0))
+            invalid("particle " + std::to_string(a) + " of a 2-D file has X_z or theta_z not 0");
         if (!f.latticeIndex.empty()) {
             const auto& cells = f.spaces[static_cast<std::size_t>(s)].cells;
             for (int d = 0; d < 3; ++d) {
@@ -143,6 +151,8 @@ void validateOverset(const ParticleFile& f, const std::vector<Index>& bodyOfSpac
                         std::to_string(s));
             }
         }
+        if (f.dimension == 2 && o.theta[e][2] != 0.0)
+            invalid(entry + ": theta_z of a 2-D file not 0");
         hasEntry[a] = 1;
     }
     if (hasEntry != f.transient) {
@@ -274,6 +284,8 @@ void writeParticleFile(const std::filesystem::path& path, const ParticleFile& f)
             }
             dtheta.push_back(s.dtheta);
         }
+        const std::int32_t dimension = f.dimension;
+        h5.write("/dimension", &dimension, {1});
         h5.write("/spaces/cells", cells.data(), {spaces, 3});
         h5.write("/spaces/periodic", periodic.data(), {spaces, 3});
         h5.write("/spaces/dtheta", dtheta.data(), {spaces});
@@ -403,6 +415,7 @@ ParticleFile readParticleFile(const std::filesystem::path& path) {
         }
     }
 
+    if (h5.exists("/dimension")) f.dimension = readColumn<std::int32_t>(h5, "/dimension", 1)[0];
     const std::vector<double> dtheta = h5.read<double>("/spaces/dtheta", dims);
     const std::size_t spaces = expectShape(h5, "/spaces/dtheta", dims, 0);
     const std::vector<std::int32_t> cells = h5.read<std::int32_t>("/spaces/cells", dims);
@@ -489,6 +502,7 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
             w.value(f.overset.kappa);
             w.array(f.spaces);
             w.array(f.nodes);
+            w.value<std::int32_t>(f.dimension);
             w.value<std::uint64_t>(f.bodies.size());
             for (const BodyInfo& b : f.bodies) {
                 w.text(b.name);
@@ -527,6 +541,7 @@ ParticleFile readParticleFileIsolated(const std::filesystem::path& path, unsigne
     f.overset.kappa = r.value<double>();
     f.spaces = r.array<LatticeSpace>();
     f.nodes = r.array<Vec3>();
+    f.dimension = r.value<std::int32_t>();
     f.bodies.resize(r.value<std::uint64_t>());
     for (BodyInfo& b : f.bodies) {
         b.name = r.text();

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The particle file (DESIGN §1, §2): what gsph-preproc writes and gsph-solve reads. HDF5,
-// format "gsph-particles" 1.3, layout in docs/formats.md (1.1 added /overset and
-// /particles/transient, 1.2 /set_areas, 1.3 /spaces/nodes; older files still read, without
-// what they lack).
+// format "gsph-particles" 1.4, layout in docs/formats.md (1.1 added /overset and
+// /particles/transient, 1.2 /set_areas, 1.3 /spaces/nodes, 1.4 /dimension; older files still
+// read, without what they lack: they are 3-D).
 //
 // Invariants (checked by validateParticleFile, on write and on read):
 //   * every per-particle array has N entries (latticeIndex: N or none);
@@ -15,7 +15,11 @@
 //     lattice and a positive finite ω; `transient` (N entries, or none when there are no
 //     entries) is 1 exactly for the particles that have an entry;
 //   * nodes (the lattice corners' reference positions, optional) hold nodeCount(spaces) finite
-//     rows: space after space, each in lattice order (i fastest), nodeExtent nodes per index.
+//     rows: space after space, each in lattice order (i fastest), nodeExtent nodes per index;
+//   * dimension is 2 or 3; a 2-D file (a layout in the x-y plane, volumes per metre of depth)
+//     has one cell along every space's third index, X_z = 0 and θ_z = 0 for every particle
+//     and overset entry (its nodes are the cells' corners at z = 0 and z = 1: a slab of unit
+//     depth).
 // Ownership: plain values; writeParticleFile writes atomically (io/atomic_file.hpp).
 #pragma once
 
@@ -33,7 +37,7 @@ namespace gsph {
 
 inline constexpr const char* kParticleFormat = "gsph-particles";
 inline constexpr int kParticleFormatMajor = 1;  ///< readers reject another major version
-inline constexpr int kParticleFormatMinor = 3;  ///< additions that old readers may ignore
+inline constexpr int kParticleFormatMinor = 4;  ///< additions that old readers may ignore
 
 /// One body: a gmsh physical volume group (or the whole mesh when there is none).
 struct BodyInfo {
@@ -74,6 +78,9 @@ struct ParticleFile {
     /// hex nodes, or a --lattice box's corners) [m]; optional (since 1.3): empty or
     /// nodeCount(spaces) rows, space after space, each in lattice order (i fastest).
     std::vector<Vec3> nodes;
+    /// 3, or 2 for a layout in the x-y plane (plane strain or axisymmetric, as the run says;
+    /// volumes and set areas per metre of depth; since 1.4, older files are 3-D).
+    int dimension = 3;
     Provenance provenance;
 
     Index size() const { return static_cast<Index>(X.size()); }

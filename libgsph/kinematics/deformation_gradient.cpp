@@ -5,6 +5,7 @@
 
 #include "core/lanes.hpp"
 #include "core/parallel.hpp"
+#include "particles/axisymmetry.hpp"
 
 namespace gsph {
 
@@ -14,8 +15,12 @@ void deformationGradient(const Reference& ref, const std::vector<Vec3>& x, std::
     parallelFor(ref.size(), [&](Index a) {
         Mat3 gradX, gradV;
         thetaGradients(ref, a, x.data(), x.data(), gradX, gradV, nullptr, ref.pairCorrections(a));
-        F[static_cast<std::size_t>(a)] =
-            gradX * ref.G[static_cast<std::size_t>(a)].transpose() + outOfPlane;
+        const auto ia = static_cast<std::size_t>(a);
+        F[ia] = gradX * ref.G[ia].transpose() + outOfPlane;
+        if (ref.dim.axisymmetric) {
+            Mat3 unusedRate = Mat3::Zero();
+            setHoopStretch(ref.X[ia], x[ia], Vec3::Zero(), F[ia], unusedRate);
+        }
     });
 }
 

@@ -4,6 +4,8 @@
 //   Ḟ(a) = [Σ_b ω_b (v_b − v_a) ⊗ ∇W_ab] G(a)^T
 // Since M = ∂X/∂θ is taken by the same sum (spaces/metric.hpp), F = (∂x/∂θ)(∂X/∂θ)^{-1} and
 // F = I holds to round-off at rest; an affine motion x = A X + c gives F = A to round-off.
+// In an axisymmetric run the zz entries are the hoop stretch r/R and its rate v_r/R instead
+// (particles/axisymmetry.hpp), set by the callers that build F from these sums.
 // Broken bonds leave the pair list (and G is recomputed), so both properties survive fracture.
 // Two evaluations of the same sum: thetaGradients (one particle, its CSR list) and
 // stencilThetaGradients (a block of particles sharing one stencil, SoA x and v, vectorised

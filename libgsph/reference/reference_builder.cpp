@@ -24,7 +24,7 @@ Reference buildReference(const ParticleFile& f, std::span<const double> densityP
         }
     }
     Reference ref;
-    ref.dim = Dimension{3};
+    ref.dim = Dimension{f.dimension};
     ref.kappa = kappa;
     ref.spaces = f.spaces;
     ref.X = f.X;

@@ -16,8 +16,10 @@
 namespace gsph {
 
 /// The reference configuration of a run from a particle file: X, θ, volume, body, space,
-/// spaces, overset entries (copied as they are), dim = 3, κ, and ρ0 per particle. Derived fields
-/// (pairs, metrics, mass) are left to completeReference (mass = ρ0 ω det M: docs/theory.md).
+/// spaces, overset entries (copied as they are), the file's dimension (a 2-D run is plane
+/// strain unless the caller sets dim.axisymmetric before completeReference), κ, and ρ0 per
+/// particle. Derived fields (pairs, metrics, mass) are left to completeReference (mass = ρ0 ω det
+/// M: docs/theory.md).
 /// @param[in] densityPerBody ρ0 [kg/m³] indexed by body id; needs one entry per body.
 /// @param[in] kappa h = κΔθ (DESIGN §3).
 /// Throws InputError if a density is missing or not positive, κ is not positive, or κ exceeds

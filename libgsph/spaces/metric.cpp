@@ -10,6 +10,7 @@
 #include "core/parallel.hpp"
 #include "overset/interface_weights.hpp"
 #include "overset/overset_band.hpp"
+#include "particles/axisymmetry.hpp"
 
 namespace gsph {
 namespace {
@@ -17,6 +18,20 @@ namespace {
 // |det B| below this (relative to a full stencil's ≈ 1) means too few neighbours in some
 // direction for a first-order correction: a particle with fewer than d independent neighbours.
 constexpr double kSingularCorrection = 1e-8;
+
+// An axisymmetric layout lies in the half-plane x > 0 (x the radius) of a 2-D run. Overset
+// layouts are refused: their interface weights are built for the plane-strain volume (and the
+// (r, z) half-plane has no coordinate singularity for them to remove).
+void checkAxisymmetric(const Reference& ref) {
+    if (ref.dim.value != 2) throw InputError("an axisymmetric run needs a 2-D particle layout");
+    if (!ref.overset.empty())
+        throw InputError("an axisymmetric run needs a layout without overset spaces");
+    for (std::size_t a = 0; a < ref.X.size(); ++a)
+        if (!(ref.X[a][0] > 0.0))
+            throw InputError("axisymmetric run: particle " + std::to_string(a) +
+                             " lies at x = " + std::to_string(ref.X[a][0]) +
+                             " (x is the radius: the layout must lie in x > 0)");
+}
 
 }  // namespace
 
@@ -65,6 +80,7 @@ void computeGeometry(Reference& ref) {
     const bool meshMass = ref.massBasis == MassBasis::MeshVolume;
     if (meshMass && ref.volume.size() != N)
         throw InputError("reference has no meshed volume per particle for its mass");
+    if (ref.dim.axisymmetric) checkAxisymmetric(ref);
     ref.spacing.resize(N);
     ref.smoothingLength.resize(N);
     ref.metricCondition.resize(N);
@@ -80,8 +96,10 @@ void computeGeometry(Reference& ref) {
         const Mat3& M = pm.M;
         const double detM = M.determinant();
         ref.G[ia] = pm.G;
-        ref.quadVolume[ia] = ref.omega[ia] * detM;
-        ref.mass[ia] = ref.density[ia] * (meshMass ? ref.volume[ia] : ref.quadVolume[ia]);
+        // An axisymmetric particle is a ring: its cross-section's area times 2πR.
+        const double ring = ref.dim.axisymmetric ? ringFactor(ref.X[ia]) : 1.0;
+        ref.quadVolume[ia] = ring * ref.omega[ia] * detM;
+        ref.mass[ia] = ref.density[ia] * (meshMass ? ring * ref.volume[ia] : ref.quadVolume[ia]);
         const int d = ref.dim.value;
         const Vec3 s = d == 3 ? Vec3(Eigen::JacobiSVD<Mat3>(M).singularValues())
                               : Vec3(Eigen::JacobiSVD<Eigen::Matrix2d>(M.topLeftCorner<2, 2>())

@@ -211,7 +211,7 @@ TEST(ParticleFile, ReadableByH5py) {
     const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
     // Python prints a float in its shortest round-trip form: compare by value, exactly.
-    EXPECT_NE(out.find("gsph-particles 1.3 SI"), std::string::npos) << out;
+    EXPECT_NE(out.find("gsph-particles 1.4 SI"), std::string::npos) << out;
     EXPECT_NE(out.find("(7, 3) (7, 3) (7,) (7, 3)"), std::string::npos) << out;
     EXPECT_NE(out.find("[3, 1, 1] [1, 0, 0]"), std::string::npos) << out;
     EXPECT_NE(out.find("['clamp', 'empty', 'tip face'] [4, 5, 6]"), std::string::npos) << out;
@@ -292,7 +292,7 @@ TEST(ParticleFile, OversetReadableByH5pyAndFormat10StillReads) {
     int status = 0;
     const std::string out = runPython(dir, script, status);
     ASSERT_EQ(status, 0) << out;
-    EXPECT_EQ(out, "1.3 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
+    EXPECT_EQ(out, "1.4 (4,) (4, 3) 8.0 1.5 [0, 1, 0, 1, 1, 1, 0, 0, 0]\n");
     const ParticleFile old = readParticleFile(dir / "p.h5");
     EXPECT_TRUE(old.transient.empty());
     EXPECT_EQ(old.overset.size(), 0u);
