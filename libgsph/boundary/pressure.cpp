@@ -7,7 +7,6 @@
 #include "core/error.hpp"
 #include "core/parallel.hpp"
 #include "kinematics/deformation_gradient.hpp"
-#include "particles/axisymmetry.hpp"
 
 namespace gsph {
 
@@ -33,8 +32,6 @@ PressureStage::PressureStage(const Reference& ref, PressureLoad load) : load_(st
         if (a < 0 || a >= ref.size() || (k > 0 && a <= load_.particles[k - 1]))
             throw InputError(set + ": particle indices out of range or not sorted");
         if (!load_.area[k].allFinite()) throw InputError(set + ": a face area is not finite");
-        // Axisymmetric: the face sweeps a ring (its area per radian times 2πR).
-        if (ref.dim.axisymmetric) load_.area[k] *= ringFactor(ref.X[static_cast<std::size_t>(a)]);
     }
     if (load_.curve.empty()) throw InputError(set + " has no pressure");
     for (std::size_t k = 0; k < load_.curve.size(); ++k) {

@@ -23,8 +23,8 @@ namespace gsph {
 struct PressureLoad {
     std::string name;              ///< the particle set's name (for messages)
     std::vector<Index> particles;  ///< sorted, unique
-    /// per particle of the set: A_a [m²] (per metre in 2-D; an axisymmetric run takes them per
-    /// metre of the (r, z) plane and makes them rings, 2πR A_a)
+    /// per particle of the set: A_a [m²] (per metre in plane strain; in an axisymmetric run the
+    /// ring its faces sweep, Σ_faces 2π r_f A_f with r_f the face's centroid radius)
     std::vector<Vec3> area;
     /// (t [s], p [Pa]) with t strictly increasing; one point: a constant pressure.
     std::vector<std::pair<double, double>> curve;
