@@ -418,8 +418,10 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
         std::make_unique<Simulation>(std::move(ref), std::move(bodies.materials), solverOptions);
     for (VelocityConstraint& vc : sets.constraints) sim->constrain(std::move(vc));
     for (SetForce& f : sets.forces) sim->applyForce(std::move(f));
-    for (PressureLoad& p : sets.pressures)
+    for (PressureLoad& p : sets.pressures) {
+        if (sim->reference().dim.axisymmetric) p.area = sweptSetAreas(file, p.name);
         sim->addStage(std::make_shared<PressureStage>(sim->reference(), std::move(p)));
+    }
     for (const WallSpec& w : c.walls) sim->addWall(wallOf(w));
     sim->setGravity(c.gravity);
     return sim;

@@ -191,6 +191,65 @@ std::size_t nodeRow(const LatticeSpace& space, int i, int j, int k) {
     return u[0] + m[0] * (u[1] + m[1] * u[2]);
 }
 
+std::vector<std::array<Index, 3>> latticeCells(const ParticleFile& f) {
+    if (!f.latticeIndex.empty()) return f.latticeIndex;
+    std::vector<std::array<Index, 3>> cells(f.X.size());
+    std::size_t first = 0;  // the space's first particle (particles are sorted by space)
+    for (std::size_t a = 0; a < cells.size(); ++a) {
+        if (a > 0 && f.space[a] != f.space[a - 1]) first = a;
+        const auto& n = f.spaces[static_cast<std::size_t>(f.space[a])].cells;
+        const auto r = static_cast<Index>(a - first);
+        cells[a] = {r % n[0], r / n[0] % n[1], r / (n[0] * n[1])};
+    }
+    return cells;
+}
+
+std::vector<Vec3> sweptSetAreas(const ParticleFile& f, const std::string& set) {
+    if (f.dimension != 2) throw InputError("swept set areas need a 2-D particle file");
+    const auto members = f.sets.find(set);
+    const auto areas = f.setAreas.find(set);
+    if (members == f.sets.end() || areas == f.setAreas.end())
+        throw InputError("set '" + set + "' has no face areas");
+    constexpr double kTwoPi = 2.0 * 3.141592653589793238462643383279502884;
+    std::vector<Vec3> swept(areas->second.size());
+    std::vector<std::size_t> firstNode(f.spaces.size() + 1, 0);
+    for (std::size_t s = 0; s < f.spaces.size(); ++s)
+        firstNode[s + 1] = firstNode[s] + nodeCount({f.spaces[s]});
+    const std::vector<std::array<Index, 3>> cells =
+        f.nodes.empty() ? std::vector<std::array<Index, 3>>{} : latticeCells(f);
+    for (std::size_t k = 0; k < swept.size(); ++k) {
+        const auto a = static_cast<std::size_t>(members->second[k]);
+        const Vec3& A = areas->second[k];
+        swept[k] = kTwoPi * f.X[a][0] * A;  // the member's own radius, unless the edges split A
+        if (f.nodes.empty()) continue;
+        const auto s = static_cast<std::size_t>(f.space[a]);
+        const auto& c = cells[a];
+        // The cell's corners in order around it; edge e joins corner e and corner e + 1.
+        const int corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        Vec3 P[4];
+        for (int e = 0; e < 4; ++e)
+            P[e] = f.nodes[firstNode[s] +
+                           nodeRow(f.spaces[s], c[0] + corner[e][0], c[1] + corner[e][1], 0)];
+        Vec3 edgeArea[4], edgeSwept[4];
+        for (int e = 0; e < 4; ++e) {
+            const Vec3 d = P[(e + 1) % 4] - P[e], mid = 0.5 * (P[e] + P[(e + 1) % 4]);
+            Vec3 n(d[1], -d[0], 0.0);  // |n| = |d|: the edge's area per metre of depth
+            if (n.dot(mid - f.X[a]) < 0.0) n = -n;
+            edgeArea[e] = n;
+            edgeSwept[e] = kTwoPi * mid[0] * n;
+        }
+        double best = 1e-9 * A.norm();
+        for (int subset = 1; subset < 16; ++subset) {
+            Vec3 sum = Vec3::Zero(), sweptSum = Vec3::Zero();
+            for (int e = 0; e < 4; ++e)
+                if (subset >> e & 1) sum += edgeArea[e], sweptSum += edgeSwept[e];
+            const double mismatch = (sum - A).norm();
+            if (mismatch <= best) best = mismatch, swept[k] = sweptSum;
+        }
+    }
+    return swept;
+}
+
 void validateParticleFile(const ParticleFile& f) {
     const auto n = static_cast<std::size_t>(f.size());
     if (f.theta.size() != n || f.volume.size() != n || f.space.size() != n || f.body.size() != n) {

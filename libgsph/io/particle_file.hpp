@@ -86,6 +86,19 @@ struct ParticleFile {
     Index size() const { return static_cast<Index>(X.size()); }
 };
 
+/// The lattice cell (i, j, k) of each particle in its space: /particles/lattice_index, or (without
+/// it) the particle's rank in its space in lattice order (i fastest).
+std::vector<std::array<Index, 3>> latticeCells(const ParticleFile& file);
+
+/// For an axisymmetric run of a 2-D file (x the radius, y the axis): the area vectors of set
+/// `set` swept about the y axis, in the set's order [m²]. A member's stored area (per metre of
+/// depth) is split into the edges of its cell whose outward areas |e| n_e add up to it (the
+/// faces gsph-preproc summed), and each edge sweeps 2π r_e |e| n_e, r_e its midpoint's radius:
+/// exact for straight edges. Where the areas do not split so (a --lattice file's shared faces,
+/// or a file without nodes) the member's own radius stands in: 2π X_r A, exact to O(Δr/r).
+/// Throws InputError if the file is not 2-D or has no such set areas.
+std::vector<Vec3> sweptSetAreas(const ParticleFile& file, const std::string& set);
+
 /// Throws InputError naming the first violated invariant (see the header comment).
 void validateParticleFile(const ParticleFile& file);
 

@@ -184,6 +184,69 @@ TEST(ParticleFile, NodesRoundTripAndTheirCountIsChecked) {
     EXPECT_FALSE(std::filesystem::exists(dir / "q.h5"));
 }
 
+/// A 2-D file: the section 1 ≤ x ≤ 2, 0 ≤ y ≤ 1 in 3 × 2 cells, with its nodes (two layers of
+/// unit depth) and a set "corner" holding particle 0's faces x = 1 and y = 0.
+ParticleFile sectionFile() {
+    ParticleFile f;
+    f.dimension = 2;
+    f.spaces.resize(1);
+    f.spaces[0].cells = {3, 2, 1};
+    const double dx = 1.0 / 3.0, dy = 0.5;
+    for (Index j = 0; j < 2; ++j)
+        for (Index i = 0; i < 3; ++i) {
+            f.theta.push_back(Vec3(i + 0.5, j + 0.5, 0.0));
+            f.X.push_back(Vec3(1.0 + (i + 0.5) * dx, (j + 0.5) * dy, 0.0));
+            f.volume.push_back(dx * dy);
+            f.space.push_back(0);
+            f.body.push_back(0);
+        }
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j <= 2; ++j)
+            for (int i = 0; i <= 3; ++i) f.nodes.push_back(Vec3(1.0 + i * dx, j * dy, k));
+    f.bodies = {{"ring", 1}};
+    f.sets["corner"] = {0, 1};
+    f.setAreas["corner"] = {Vec3(-dy, -dx, 0.0), Vec3(0.0, -0.5 * dx, 0.0)};
+    return f;
+}
+
+// Dimension 2 is stored and read back by both readers; a 2-D file with two cells along a
+// space's third index, or a particle off the plane z = 0, is refused.
+TEST(ParticleFile, TwoDimensionalFilesRoundTripAndAreChecked) {
+    test::TempDir dir;
+    const ParticleFile f = sectionFile();
+    writeParticleFile(dir / "p.h5", f);
+    EXPECT_EQ(readParticleFile(dir / "p.h5").dimension, 2);
+    EXPECT_EQ(readParticleFileIsolated(dir / "p.h5").dimension, 2);
+    writeParticleFile(dir / "q.h5", sampleFile());
+    EXPECT_EQ(readParticleFile(dir / "q.h5").dimension, 3);
+    ParticleFile thick = f;
+    thick.spaces[0].cells[2] = 2;
+    EXPECT_THROW(writeParticleFile(dir / "r.h5", thick), InputError);
+    ParticleFile lifted = f;
+    lifted.X[3][2] = 1e-3;
+    EXPECT_THROW(writeParticleFile(dir / "r.h5", lifted), InputError);
+    ParticleFile fourD = f;
+    fourD.dimension = 4;
+    EXPECT_THROW(writeParticleFile(dir / "r.h5", fourD), InputError);
+    EXPECT_FALSE(std::filesystem::exists(dir / "r.h5"));
+}
+
+// Swept about the y axis, each face becomes the ring 2π r_face |e| n: particle 0's two faces
+// at their own radii (x = 1 and x = 1 + dx/2), exactly; particle 1's area, half its face's, does
+// not split into edges, so its own radius stands in.
+TEST(ParticleFile, SweptSetAreasTakeEachFaceAtItsRadius) {
+    const ParticleFile f = sectionFile();
+    const double pi = 3.141592653589793, dx = 1.0 / 3.0, dy = 0.5;
+    const std::vector<Vec3> swept = sweptSetAreas(f, "corner");
+    ASSERT_EQ(swept.size(), 2u);
+    const Vec3 corner = 2 * pi * 1.0 * Vec3(-dy, 0, 0) + 2 * pi * (1.0 + dx / 2) * Vec3(0, -dx, 0);
+    EXPECT_LE((swept[0] - corner).norm(), 1e-15 * corner.norm()) << swept[0].transpose();
+    const Vec3 fallback = 2 * pi * f.X[1][0] * Vec3(0, -0.5 * dx, 0);
+    EXPECT_LE((swept[1] - fallback).norm(), 1e-15 * fallback.norm()) << swept[1].transpose();
+    EXPECT_THROW(sweptSetAreas(sampleFile(), "tip face"), InputError);
+    EXPECT_THROW(sweptSetAreas(f, "none"), InputError);
+}
+
 TEST(ParticleFile, SameDataGivesSameBytes) {
     test::TempDir dir;
     writeParticleFile(dir / "a.h5", sampleFile());
