@@ -9,7 +9,10 @@ particle's cell reaches n·x + Σ_d |n·F e_d| along a direction n. The bar's le
 distance between its highest and lowest reach along z (the axis). The footprint diameter is
 that of the disc of the impact face's area: the particles of the set "impact" (the face z = 0)
 carry their cells' bottom faces, of reference area vector A0 = 4 e_1 × e_2 (the two half-edges
-across z) and current area vector J F^-T A0 (Nanson); D = 2 √(Σ |A_z| / π). An area measure is
+across z) and current area vector J F^-T A0 (Nanson); D = 2 √(Σ |A_z| / π). A 2-D (axisymmetric)
+particle file is measured the same way on its section: y the axis, each cell a ring, the
+footprint the rings the impact face's cells sweep. Also: the plastic strain and temperature of
+the impact face's particle nearest the axis (the face centre). An area measure is
 fair to both layouts: a staircase's corners would inflate a largest-radius measure by up to
 h(√2 − 1), the O-grid's polygon would shrink it.
 
@@ -22,8 +25,10 @@ import numpy as np
 
 
 def half_edges(particles_h5):
-    """Reference half-edge vectors, shape (N, 3 axes, 3 components)."""
+    """Reference half-edge vectors, shape (N, 3 axes, 3 components), the impact set and the
+    file's dimension (2: an axisymmetric section, x the radius and y the axis)."""
     with h5py.File(particles_h5, "r") as f:
+        dimension = int(f["dimension"][0]) if "dimension" in f else 3
         X = f["particles/X"][...]
         ijk = f["particles/lattice_index"][...].astype(np.int64)
         space = f["particles/space"][...].astype(np.int64)
@@ -40,7 +45,7 @@ def half_edges(particles_h5):
 
     table[key(space, ijk)] = np.arange(n)
     edges = np.zeros((n, 3, 3))
-    for d in range(3):
+    for d in range(dimension):
         found = []
         for step in (+1, -1):
             c = ijk.copy()
@@ -60,16 +65,20 @@ def half_edges(particles_h5):
         e[only_up] = 0.5 * (X[up[only_up]] - X[only_up])
         e[only_down] = 0.5 * (X[only_down] - X[down[only_down]])
         edges[:, d, :] = e
-    return edges, impact
+    return edges, impact, dimension
 
 
 def measure(particles_h5, snapshot_h5, layout=None):
-    edges, impact = layout if layout is not None else half_edges(particles_h5)
+    edges, impact, dimension = layout if layout is not None else half_edges(particles_h5)
     with h5py.File(snapshot_h5, "r") as f:
         x = f["particles/x"][...]
         F = f["particles/F"][...].reshape(-1, 3, 3)
         time = float(f["time"][()])
+        strain = f["particles/plastic_strain"][...] if "particles/plastic_strain" in f else None
+        temperature = f["particles/temperature"][...] if "particles/temperature" in f else None
     deformed = np.einsum("aij,adj->adi", F, edges)  # F e_d, (N, axis d, component i)
+    if dimension == 2:
+        return measure_axisymmetric(x, deformed, impact, time, strain, temperature)
     reach_z = np.abs(deformed[:, :, 2]).sum(axis=1)
     top = np.max(x[:, 2] + reach_z)
     bottom = np.min(x[:, 2] - reach_z)
@@ -90,6 +99,7 @@ def measure(particles_h5, snapshot_h5, layout=None):
     Fi = F[impact]
     cofactor = np.linalg.det(Fi)[:, None, None] * np.linalg.inv(Fi).transpose(0, 2, 1)
     area = np.abs(np.einsum("aij,aj->ai", cofactor, A0)[:, 2]).sum()
+    centre = impact[np.argmin(r[impact])]
     return {
         "time": time,
         "length": top - bottom,
@@ -100,6 +110,37 @@ def measure(particles_h5, snapshot_h5, layout=None):
         "z": x[:, 2] - bottom,
         "reach_z": reach_z,
         "reach_r": reach_r,
+        "centre_strain": strain[centre] if strain is not None else np.nan,
+        "centre_temperature": temperature[centre] if temperature is not None else np.nan,
+    }
+
+
+def measure_axisymmetric(x, deformed, impact, time, strain, temperature):
+    """The same measures on an axisymmetric section (x = r, y the axis): each cell is a ring;
+    the footprint is the disc of the rings the impact face's cells sweep, Σ 2π r |radial width|
+    of their faces on y = 0."""
+    reach_y = np.abs(deformed[:, :, 1]).sum(axis=1)
+    top = np.max(x[:, 1] + reach_y)
+    bottom = np.min(x[:, 1] - reach_y)
+    reach_r = x[:, 0] + np.abs(deformed[:, :, 0]).sum(axis=1)
+    widest = int(np.argmax(reach_r))
+    e = deformed[impact]
+    along = np.argmax(np.abs(e[:, :2, 0]), axis=1)  # the in-plane edge that runs radially
+    width = 2.0 * np.abs(e[np.arange(len(impact)), along, 0])
+    area = (2.0 * np.pi * x[impact, 0] * width).sum()
+    centre = impact[np.argmin(x[impact, 0])]
+    return {
+        "time": time,
+        "length": top - bottom,
+        "footprint": 2.0 * np.sqrt(area / np.pi),
+        "widest": 2.0 * reach_r[widest],
+        "at_z": x[widest, 1] - bottom,
+        "bottom": bottom,
+        "z": x[:, 1] - bottom,
+        "reach_z": reach_y,
+        "reach_r": reach_r,
+        "centre_strain": strain[centre] if strain is not None else np.nan,
+        "centre_temperature": temperature[centre] if temperature is not None else np.nan,
     }
 
 
@@ -118,4 +159,5 @@ if __name__ == "__main__":
     m = measure(sys.argv[1], sys.argv[2])
     print(f"t = {m['time']:.3e} s: length {1e3 * m['length']:.3f} mm, footprint diameter "
           f"{1e3 * m['footprint']:.3f} mm (largest reach: {1e3 * m['widest']:.3f} mm at "
-          f"z = {1e3 * m['at_z']:.3f} mm)")
+          f"z = {1e3 * m['at_z']:.3f} mm); impact-face centre: plastic strain "
+          f"{m['centre_strain']:.3f}, temperature {m['centre_temperature']:.1f} K")
