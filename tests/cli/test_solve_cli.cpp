@@ -397,19 +397,24 @@ TEST(SolveCli, TaylorBarIsBitIdenticalOnOneAndTwoThreads) {
 // (run.log), and the bore particles' radial displacement averaged over the hold's snapshots is
 // Lamé's at their radius, as the library's test finds (−0.62 %): the swept pressure acts on the
 // bore's ring 2π ri H.
-TEST(SolveCli, AxisymmetricRunOfATwoDimensionalFileMatchesLame) {
-    TempDir dir;
-    const double ri = 0.01, ro = 0.02, p = 1e8, pi = 3.141592653589793;
-    const int nr = 40, nz = 4;
-    const double dr = (ro - ri) / nr, H = nz * dr;
+// The section ri = 10 mm ≤ x ≤ ro = 20 mm, 0 ≤ y ≤ H of a cylinder's wall as a 2-D particle file
+// (40 × 4 particles of 0.25 mm): sets "all" and "bore" (x = ri, with its faces' areas per metre).
+struct CylinderSection {
+    double ri = 0.01, ro = 0.02;
+    int nr = 40, nz = 4;
+    double dr() const { return (ro - ri) / nr; }
+    double height() const { return nz * dr(); }
+};
+ParticleFile cylinderSectionFile(const CylinderSection& c) {
     ParticleFile f;
     f.dimension = 2;
     f.spaces.resize(1);
-    f.spaces[0].cells = {nr, nz, 1};
-    for (int j = 0; j < nz; ++j)
-        for (int i = 0; i < nr; ++i) {
+    f.spaces[0].cells = {c.nr, c.nz, 1};
+    const double dr = c.dr();
+    for (int j = 0; j < c.nz; ++j)
+        for (int i = 0; i < c.nr; ++i) {
             f.theta.push_back(Vec3(i + 0.5, j + 0.5, 0.0));
-            f.X.push_back(Vec3(ri + (i + 0.5) * dr, (j + 0.5) * dr, 0.0));
+            f.X.push_back(Vec3(c.ri + (i + 0.5) * dr, (j + 0.5) * dr, 0.0));
             f.volume.push_back(dr * dr);
             f.space.push_back(0);
             f.body.push_back(0);
@@ -420,9 +425,30 @@ TEST(SolveCli, AxisymmetricRunOfATwoDimensionalFileMatchesLame) {
             }
         }
     for (int k = 0; k < 2; ++k)
-        for (int j = 0; j <= nz; ++j)
-            for (int i = 0; i <= nr; ++i) f.nodes.push_back(Vec3(ri + i * dr, j * dr, k));
+        for (int j = 0; j <= c.nz; ++j)
+            for (int i = 0; i <= c.nr; ++i) f.nodes.push_back(Vec3(c.ri + i * dr, j * dr, k));
     f.bodies = {{"cylinder", 1}};
+    return f;
+}
+
+// The case of the cylinder section: steel, every particle on a roller in y, `run` and `pressure`
+// the [run] keys and the bore's pressure.
+std::string cylinderCase(const std::string& run, const std::string& pressure) {
+    return "[run]\nparticles = \"cylinder.h5\"\n" + run +
+           kSteelBar.substr(0, kSteelBar.find("[[body]]")) +
+           "[[body]]\ngroup = \"cylinder\"\nmaterial = \"steel\"\n"
+           "[[set]]\nname = \"all\"\nfixed = [\"y\"]\n"
+           "[[set]]\nname = \"bore\"\npressure = " +
+           pressure + "\n";
+}
+
+TEST(SolveCli, AxisymmetricRunOfATwoDimensionalFileMatchesLame) {
+    TempDir dir;
+    const CylinderSection c;
+    const double ri = c.ri, ro = c.ro, p = 1e8, pi = 3.141592653589793;
+    const int nz = c.nz;
+    const double dr = c.dr(), H = c.height();
+    const ParticleFile f = cylinderSectionFile(c);
     writeParticleFile(dir / "cylinder.h5", f);
     std::string curve;
     for (int k = 0; k <= 30; ++k) {
@@ -432,14 +458,9 @@ TEST(SolveCli, AxisymmetricRunOfATwoDimensionalFileMatchesLame) {
                       0.5 * p * (1 - std::cos(pi * k / 30)));
         curve += point;
     }
-    std::ofstream(dir / "lame.toml")
-        << "[run]\nparticles = \"cylinder.h5\"\ndimension = \"axisymmetric\"\n"
-           "end_time = 2.5e-4\noutput_interval = 2.0e-6\n" +
-               kSteelBar.substr(0, kSteelBar.find("[[body]]")) +
-               "[[body]]\ngroup = \"cylinder\"\nmaterial = \"steel\"\n"
-               "[[set]]\nname = \"all\"\nfixed = [\"y\"]\n"
-               "[[set]]\nname = \"bore\"\npressure = [" +
-               curve + "]\n";
+    std::ofstream(dir / "lame.toml") << cylinderCase(
+        "dimension = \"axisymmetric\"\nend_time = 2.5e-4\noutput_interval = 2.0e-6\n",
+        "[" + curve + "]");
     const auto r = runCommand(kSolve + " " + (dir / "lame.toml").string() + " -o " +
                               (dir / "run").string() + " --threads 2");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -455,7 +476,7 @@ TEST(SolveCli, AxisymmetricRunOfATwoDimensionalFileMatchesLame) {
         char name[32];
         std::snprintf(name, sizeof name, "snapshot_%06d.h5", k);
         const Snapshot s = readSnapshot(dir / "run" / name);
-        for (const Index a : f.sets["bore"])
+        for (const Index a : f.sets.at("bore"))
             u += s.state.x[static_cast<std::size_t>(a)][0] - f.X[static_cast<std::size_t>(a)][0];
         samples += nz;
     }
@@ -469,6 +490,29 @@ TEST(SolveCli, AxisymmetricRunOfATwoDimensionalFileMatchesLame) {
         mass, exact, u, lame, 100 * (u / lame - 1));
     EXPECT_NEAR(mass / exact, 1.0, 1e-6);  // run.log prints 6 digits
     EXPECT_NEAR(u / lame, 1.0, 0.008);
+}
+
+// The same 2-D file without [run] dimension runs in plane strain: per metre of depth, the
+// bore's constant pressure p pushes the slab with the impulse p H t (every particle on a roller
+// in y, so the faces keep their area: the identity holds to round-off).
+TEST(SolveCli, TwoDimensionalFileRunsInPlaneStrainByDefault) {
+    TempDir dir;
+    const CylinderSection c;
+    writeParticleFile(dir / "cylinder.h5", cylinderSectionFile(c));
+    const double p = 1e7, end = 2e-6;
+    std::ofstream(dir / "slab.toml")
+        << cylinderCase("end_time = 2.0e-6\noutput_interval = 1.0e-6\n", "1.0e7");
+    const auto r =
+        runCommand(kSolve + " " + (dir / "slab.toml").string() + " -o " + (dir / "run").string());
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::vector<std::string> header;
+    const auto rows = readCsv(dir / "run" / "history.csv", header);
+    const auto col = static_cast<std::size_t>(
+        std::find(header.begin(), header.end(), "momentum_x") - header.begin());
+    ASSERT_LT(col, header.size());
+    const double impulse = p * c.height() * end;
+    std::printf("[plane strain cli] momentum_x %.9e, p H t %.9e\n", rows.back()[col], impulse);
+    EXPECT_NEAR(rows.back()[col] / impulse, 1.0, 1e-12);
 }
 
 // The per-wall columns of history.csv: the graded bar (M = 0.0785 kg) laid on a floor under
