@@ -309,6 +309,11 @@ int main(int argc, char** argv) {
                     gsph::post::requireRevolvableSection(*solid.solid, solid.path.string());
                 }
             }
+            // A planar run has no crack surfaces to draw: say so once, write no empty ones.
+            if (k == 0 && cracksPossible && !spansThreeDimensions(snap.X)) {
+                std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
+                cracksPossible = false;
+            }
             gsph::post::writeVtu(out / vtu, snap, solid.labels);
             series.emplace_back(snap.state.time, vtu);
             if (solid.solid) {
@@ -328,20 +333,14 @@ int main(int argc, char** argv) {
                 gsph::post::CrackSurface surface;
                 if (!snap.brokenBonds.empty()) {
                     if (!cracks) {
-                        if (!spansThreeDimensions(snap.X)) {
-                            std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
+                        const double t0 = cpuSeconds();
+                        try {
+                            cracks = std::make_unique<gsph::post::CrackSurfaces>(snap.X, snap.body);
+                        } catch (const gsph::InputError& e) {
+                            std::printf("gsph-post: no crack surfaces: %s\n", e.what());
                             cracksPossible = false;
-                        } else {
-                            const double t0 = cpuSeconds();
-                            try {
-                                cracks =
-                                    std::make_unique<gsph::post::CrackSurfaces>(snap.X, snap.body);
-                            } catch (const gsph::InputError& e) {
-                                std::printf("gsph-post: no crack surfaces: %s\n", e.what());
-                                cracksPossible = false;
-                            }
-                            crackSetup = cpuSeconds() - t0;
                         }
+                        crackSetup = cpuSeconds() - t0;
                     }
                     if (cracks) surface = cracks->surface(snap);
                 }
