@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "io/child_process.hpp"
@@ -320,11 +321,18 @@ constexpr double kOnAxis = 1e-9;
 
 }  // namespace
 
-void requireRevolvableSection(const HexSolid& solid, const std::string& source) {
+void requireRevolvableSection(const HexSolid& solid, int sectors, const std::string& source) {
     if (solid.dimension() != 2)
         throw InputError(source +
                          ": a 3-D particle file; --revolve sweeps a 2-D (axisymmetric) section");
     for (const SolidPiece& piece : solid.pieces()) {
+        // The revolved piece's connectivity (8 ids per cell and sector) is counted in Index.
+        const double ids = 8.0 * static_cast<double>(piece.cells()) * sectors;
+        if (ids > static_cast<double>(std::numeric_limits<Index>::max()))
+            throw InputError(source + ": space " + std::to_string(piece.space) + "'s " +
+                             std::to_string(piece.cells()) + " cells in " +
+                             std::to_string(sectors) +
+                             " sectors are too many for one revolved piece; use fewer sectors");
         const double tolerance = kOnAxis * sectionSize(piece);
         for (const Vec3& X : piece.nodeX)
             if (X[0] < -tolerance)
@@ -357,12 +365,12 @@ double solidOfRevolutionVolume(const SolidPiece& piece, const std::vector<Vec3>&
             const double ri = onAxis[i] ? 0.0 : nodes[i][0], rj = onAxis[j] ? 0.0 : nodes[j][0];
             moment += (ri + rj) * (ri * nodes[j][1] - rj * nodes[i][1]) / 6.0;
         }
-    return 2.0 * M_PI * moment;
+    return 2.0 * std::numbers::pi * moment;
 }
 
 RevolvedCells revolveSection(const SolidPiece& piece, const std::vector<Vec3>& nodes, int sectors) {
     RevolvedCells out;
-    const double step = 2.0 * M_PI / sectors;
+    const double step = 2.0 * std::numbers::pi / sectors;
     // Node ids: a node on the axis once, every other node once per angle 2π k/N.
     std::vector<Index> first(nodes.size());
     const std::vector<bool> onAxis = nodesOnAxis(piece);

@@ -144,9 +144,10 @@ RevolvedCells revolveSection(const SolidPiece& piece, const std::vector<Vec3>& n
 /// revolveSection's N-gon approaches as N grows.
 double solidOfRevolutionVolume(const SolidPiece& piece, const std::vector<Vec3>& nodes);
 
-/// Throws InputError naming `source` unless the solid can be revolved: a 2-D file whose nodes
-/// all lie at x ≥ 0 (to round-off).
-void requireRevolvableSection(const HexSolid& solid, const std::string& source);
+/// Throws InputError naming `source` unless the solid can be revolved into `sectors` sectors: a
+/// 2-D file whose nodes all lie at x ≥ 0 (to round-off), and few enough cells × sectors for
+/// RevolvedCells' Index node ids.
+void requireRevolvableSection(const HexSolid& solid, int sectors, const std::string& source);
 
 /// Where a run's particle file is, or why none was found.
 struct ParticleFileLocation {

@@ -306,7 +306,8 @@ int main(int argc, char** argv) {
                         throw gsph::InputError(runDir +
                                                ": --revolve needs the run's particle file (no "
                                                "solid, see above); pass --particles FILE");
-                    gsph::post::requireRevolvableSection(*solid.solid, solid.path.string());
+                    gsph::post::requireRevolvableSection(*solid.solid, revolve,
+                                                         solid.path.string());
                 }
             }
             // A planar run has no crack surfaces to draw: say so once, write no empty ones.

@@ -19,9 +19,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <string>
 #include <type_traits>
 
+#include "core/error.hpp"
 #include "hex_solid.hpp"
 #include "io/particle_file.hpp"
 #include "io/snapshot.hpp"
@@ -247,7 +249,8 @@ TEST(RevolvedSolid, EightSectorsOfARectangleOnTheAxis) {
     EXPECT_NE(r.out.find("revolved solid"), std::string::npos) << r.out;
     EXPECT_TRUE(fs::exists(run / "post/solid_revolved.pvd"));
     EXPECT_TRUE(fs::exists(run / "post/solid_revolved_000001.vtm"));
-    const double share = kSectors / (2.0 * M_PI) * std::sin(2.0 * M_PI / kSectors);
+    const double share =
+        kSectors / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi / kSectors);
 
     const Grid rest = readGrid(run / "post/solid_revolved_000000_s0.vtu");
     ASSERT_EQ(rest->GetNumberOfCells(), kSectors * kCells[0] * kCells[1]);
@@ -261,14 +264,14 @@ TEST(RevolvedSolid, EightSectorsOfARectangleOnTheAxis) {
     }
     EXPECT_EQ(wedges, kSectors * kCells[1]);  // the column of cells on the axis
     const auto [restVolume, restSmallest] = cellVolumes(rest);
-    const double cylinder = share * M_PI * kR * kR * kL;
+    const double cylinder = share * std::numbers::pi * kR * kR * kL;
     EXPECT_GT(restSmallest, 0.0);
 
     const Grid moved = readGrid(run / "post/solid_revolved_000001_s0.vtu");
     const auto [movedVolume, movedSmallest] = cellVolumes(moved);
     // x' = A_00 X, y' = A_10 X + A_11 Y: ∫ r dA = A_00 det A₂ R² L / 2.
     const double stretched =
-        share * 2.0 * M_PI * kA(0, 0) * (kA(0, 0) * kA(1, 1)) * 0.5 * kR * kR * kL;
+        share * 2.0 * std::numbers::pi * kA(0, 0) * (kA(0, 0) * kA(1, 1)) * 0.5 * kR * kR * kL;
     EXPECT_GT(movedSmallest, 0.0);
     std::printf(
         "[ measured ] --revolve %d: at rest %.15g m³ against the %d-gon's share %.6f of π R² L "
@@ -291,7 +294,7 @@ TEST(RevolvedSolid, EightSectorsOfARectangleOnTheAxis) {
     for (vtkIdType c = 0; c < moved->GetNumberOfCells(); ++c) {
         const vtkIdType sector = c / (kCells[0] * kCells[1]);
         EXPECT_EQ(id->GetTuple1(c), c % (kCells[0] * kCells[1]));
-        const double phi = (sector + 0.5) * 2.0 * M_PI / kSectors;
+        const double phi = (sector + 0.5) * 2.0 * std::numbers::pi / kSectors;
         const double* v = velocity->GetTuple3(c);
         worstVelocity = std::max(
             worstVelocity,
@@ -369,8 +372,9 @@ velocity = [20.0, 0.0, 0.0]
         }
     }
     EXPECT_EQ(worstZ, 0.0);
-    const double share = kSectors / (2.0 * M_PI) * std::sin(2.0 * M_PI / kSectors);
-    const double expected = share * 2.0 * M_PI * moment;
+    const double share =
+        kSectors / (2.0 * std::numbers::pi) * std::sin(2.0 * std::numbers::pi / kSectors);
+    const double expected = share * 2.0 * std::numbers::pi * moment;
     const auto [volume, smallest] = cellVolumes(revolved);
     std::printf(
         "[ measured ] axisymmetric run, --revolve %d: %.15g m³ against the %d-gon's share of 2π "
@@ -385,7 +389,7 @@ velocity = [20.0, 0.0, 0.0]
     ASSERT_NE(turned, nullptr);
     double worst = 0.0;
     for (vtkIdType c = 0; c < revolved->GetNumberOfCells(); ++c) {
-        const double phi = (c / cells + 0.5) * 2.0 * M_PI / kSectors;
+        const double phi = (c / cells + 0.5) * 2.0 * std::numbers::pi / kSectors;
         const double* v = flat->GetTuple3(c % cells);
         const double vr = v[0], vy = v[1];
         const double* w = turned->GetTuple3(c);
@@ -394,6 +398,24 @@ velocity = [20.0, 0.0, 0.0]
             (Vec3(w[0], w[1], w[2]) - Vec3(vr * std::cos(phi), vy, vr * std::sin(phi))).norm());
     }
     EXPECT_LT(worst, 1e-12);
+}
+
+// A section reaching x < 0 is no half-plane of a body of revolution: refused, naming the file.
+TEST(RevolvedSolid, SectionAcrossTheAxisIsRefused) {
+    ParticleFile f = rectangle(2);
+    for (Vec3& X : f.X) X[0] -= 0.1;
+    for (Vec3& X : f.nodes) X[0] -= 0.1;
+    const post::HexSolid solid(f, f.X, "across.h5");
+    try {
+        post::requireRevolvableSection(solid, 8, "across.h5");
+        FAIL() << "a section across the axis must be refused";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("across.h5: a node of space 0 lies at (-0.1, "),
+                  std::string::npos)
+            << e.what();
+    }
+    EXPECT_NO_THROW(post::requireRevolvableSection(
+        post::HexSolid(rectangle(2), rectangle(2).X, "rectangle.h5"), 8, "rectangle.h5"));
 }
 
 // --revolve on a 3-D particle file: one line naming the file and the fault, exit code 1; and
