@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "io/child_process.hpp"
@@ -21,6 +22,10 @@ constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
                                {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
 // The same corners mirrored in k (a left-handed frame).
 constexpr int kMirrored[8] = {4, 5, 6, 7, 0, 1, 2, 3};
+// Lattice offsets (i, j) of a 2-D cell's corners in VTK_QUAD order, and the same reversed (a
+// left-handed frame in the plane).
+constexpr int kQuadCorner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+constexpr int kReversed[4] = {0, 3, 2, 1};
 
 using Cell = std::array<int, 3>;
 
@@ -117,6 +122,26 @@ double hexahedraVolume(const SolidPiece& piece, const std::vector<Vec3>& nodes) 
     return total;
 }
 
+double quadrilateralArea(const std::array<Vec3, 4>& x) {
+    // Half the cross product of the diagonals: the shoelace formula of the four corners.
+    const Vec3 d02 = x[2] - x[0], d13 = x[3] - x[1];
+    return 0.5 * (d02[0] * d13[1] - d02[1] * d13[0]);
+}
+
+double quadrilateralsArea(const SolidPiece& piece, const std::vector<Vec3>& nodes) {
+    double total = 0.0;
+    for (const auto& quad : piece.quads) {
+        std::array<Vec3, 4> x;
+        for (int c = 0; c < 4; ++c) x[c] = nodes[static_cast<std::size_t>(quad[c])];
+        total += quadrilateralArea(x);
+    }
+    return total;
+}
+
+double cellsVolume(const SolidPiece& piece, const std::vector<Vec3>& nodes) {
+    return hexahedraVolume(piece, nodes) + quadrilateralsArea(piece, nodes);
+}
+
 HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std::string& source) {
     const std::size_t n = X.size();
     if (static_cast<std::size_t>(f.size()) != n)
@@ -133,6 +158,7 @@ HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std:
     volume_ = f.volume;
     for (double V : volume_) particleVolume_ += V;
     estimated_ = f.nodes.empty();
+    dimension_ = f.dimension;
 
     // The particles of each space and their cells (lattice_index, or the rank in the space).
     std::vector<SpaceCells> spaces(f.spaces.size());
@@ -180,20 +206,33 @@ HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std:
         piece.space = static_cast<Index>(s);
         piece.body = f.body[static_cast<std::size_t>(sc.particles.front().first)];
         std::vector<Index> idOfRow(rows, -1);
-        for (const auto& [a, c] : sc.particles) {
-            std::array<Index, 8> hex;
-            for (int k = 0; k < 8; ++k) {
-                const std::size_t r =
-                    nodeRow(sp, c[0] + kCorner[k][0], c[1] + kCorner[k][1], c[2] + kCorner[k][2]);
-                if (idOfRow[r] < 0) {
-                    idOfRow[r] = static_cast<Index>(piece.nodeX.size());
-                    piece.nodeX.push_back(reference[r]);
-                    piece.cellsAround.push_back(0);
-                }
-                hex[k] = idOfRow[r];
-                ++piece.cellsAround[static_cast<std::size_t>(hex[k])];
+        // The piece's id of lattice node (i, j, k), added at its first use.
+        auto nodeId = [&](int i, int j, int k) {
+            const std::size_t r = nodeRow(sp, i, j, k);
+            if (idOfRow[r] < 0) {
+                idOfRow[r] = static_cast<Index>(piece.nodeX.size());
+                Vec3 at = reference[r];
+                // The layout's plane: the mid-plane of estimated nodes (z = ±½), z = 0 of given.
+                if (dimension_ == 2) at[2] = 0.0;
+                piece.nodeX.push_back(at);
+                piece.cellsAround.push_back(0);
             }
-            piece.hexes.push_back(hex);
+            ++piece.cellsAround[static_cast<std::size_t>(idOfRow[r])];
+            return idOfRow[r];
+        };
+        for (const auto& [a, c] : sc.particles) {
+            if (dimension_ == 2) {
+                std::array<Index, 4> quad;
+                for (int k = 0; k < 4; ++k)
+                    quad[k] = nodeId(c[0] + kQuadCorner[k][0], c[1] + kQuadCorner[k][1], 0);
+                piece.quads.push_back(quad);
+            } else {
+                std::array<Index, 8> hex;
+                for (int k = 0; k < 8; ++k)
+                    hex[k] =
+                        nodeId(c[0] + kCorner[k][0], c[1] + kCorner[k][1], c[2] + kCorner[k][2]);
+                piece.hexes.push_back(hex);
+            }
             piece.particle.push_back(a);
         }
         // A left-handed lattice frame (det ∂X/∂u < 0) would turn every cell inside out.
@@ -202,8 +241,17 @@ HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std:
                 const std::array<Index, 8> h = hex;
                 for (int k = 0; k < 8; ++k) hex[k] = h[kMirrored[k]];
             }
+        if (quadrilateralsArea(piece, piece.nodeX) < 0.0)
+            for (auto& quad : piece.quads) {
+                const std::array<Index, 4> q = quad;
+                for (int k = 0; k < 4; ++k) quad[k] = q[kReversed[k]];
+            }
         pieces_.push_back(std::move(piece));
     }
+}
+
+std::size_t HexSolid::cells() const {
+    return hexahedra() + quadrilaterals();
 }
 
 std::size_t HexSolid::hexahedra() const {
@@ -212,36 +260,181 @@ std::size_t HexSolid::hexahedra() const {
     return total;
 }
 
+std::size_t HexSolid::quadrilaterals() const {
+    std::size_t total = 0;
+    for (const SolidPiece& p : pieces_) total += p.quads.size();
+    return total;
+}
+
 double HexSolid::referenceVolume() const {
     double total = 0.0;
-    for (const SolidPiece& p : pieces_) total += hexahedraVolume(p, p.nodeX);
+    for (const SolidPiece& p : pieces_) total += cellsVolume(p, p.nodeX);
     return total;
 }
 
 double HexSolid::particleVolume(const Snapshot& s) const {
     double total = 0.0;
-    for (std::size_t a = 0; a < volume_.size() && a < s.state.F.size(); ++a)
-        total += volume_[a] * s.state.F[a].determinant();
+    for (std::size_t a = 0; a < volume_.size() && a < s.state.F.size(); ++a) {
+        const Mat3& F = s.state.F[a];
+        total += volume_[a] *
+                 (dimension_ == 2 ? F(0, 0) * F(1, 1) - F(0, 1) * F(1, 0) : F.determinant());
+    }
     return total;
 }
 
 double HexSolid::currentVolume(const Snapshot& s) const {
     double total = 0.0;
-    for (const SolidPiece& p : pieces_) total += hexahedraVolume(p, currentNodes(p, s));
+    for (const SolidPiece& p : pieces_) total += cellsVolume(p, currentNodes(p, s));
     return total;
 }
 
 std::vector<Vec3> HexSolid::currentNodes(const SolidPiece& piece, const Snapshot& s) const {
     std::vector<Vec3> x(piece.nodeX.size(), Vec3::Zero());
-    for (std::size_t h = 0; h < piece.hexes.size(); ++h) {
-        const auto a = static_cast<std::size_t>(piece.particle[h]);
-        for (const Index node : piece.hexes[h]) {
+    auto addCell = [&](std::size_t cell, const auto& corners) {
+        const auto a = static_cast<std::size_t>(piece.particle[cell]);
+        for (const Index node : corners) {
             const auto i = static_cast<std::size_t>(node);
             x[i] += s.state.x[a] + s.state.F[a] * (piece.nodeX[i] - s.X[a]);
         }
-    }
+    };
+    for (std::size_t h = 0; h < piece.hexes.size(); ++h) addCell(h, piece.hexes[h]);
+    for (std::size_t q = 0; q < piece.quads.size(); ++q) addCell(q, piece.quads[q]);
     for (std::size_t i = 0; i < x.size(); ++i) x[i] /= piece.cellsAround[i];
     return x;
+}
+
+namespace {
+
+// The reference section's size (the largest extent of its nodes), for the axis tolerance.
+double sectionSize(const SolidPiece& piece) {
+    Vec3 lo = Vec3::Constant(1e300), hi = Vec3::Constant(-1e300);
+    for (const Vec3& X : piece.nodeX) {
+        lo = lo.cwiseMin(X);
+        hi = hi.cwiseMax(X);
+    }
+    return piece.nodeX.empty() ? 0.0 : (hi - lo).maxCoeff();
+}
+
+// Nodes this close to x = 0, relative to the section's size, lie on the axis: the mesh's
+// coordinates carry round-off.
+constexpr double kOnAxis = 1e-9;
+
+}  // namespace
+
+void requireRevolvableSection(const HexSolid& solid, int sectors, const std::string& source) {
+    if (solid.dimension() != 2)
+        throw InputError(source +
+                         ": a 3-D particle file; --revolve sweeps a 2-D (axisymmetric) section");
+    for (const SolidPiece& piece : solid.pieces()) {
+        // The revolved piece's connectivity (8 ids per cell and sector) is counted in Index.
+        const double ids = 8.0 * static_cast<double>(piece.cells()) * sectors;
+        if (ids > static_cast<double>(std::numeric_limits<Index>::max()))
+            throw InputError(source + ": space " + std::to_string(piece.space) + "'s " +
+                             std::to_string(piece.cells()) + " cells in " +
+                             std::to_string(sectors) +
+                             " sectors are too many for one revolved piece; use fewer sectors");
+        const double tolerance = kOnAxis * sectionSize(piece);
+        for (const Vec3& X : piece.nodeX)
+            if (X[0] < -tolerance)
+                throw InputError(source + ": a node of space " + std::to_string(piece.space) +
+                                 " lies at " + point(X) +
+                                 ", at x < 0; --revolve needs a section at x = r ≥ 0");
+    }
+}
+
+namespace {
+
+// Per node of a piece: does it lie on the axis x = 0 (in the reference configuration)?
+std::vector<bool> nodesOnAxis(const SolidPiece& piece) {
+    const double tolerance = kOnAxis * sectionSize(piece);
+    std::vector<bool> onAxis(piece.nodeX.size());
+    for (std::size_t i = 0; i < onAxis.size(); ++i)
+        onAxis[i] = std::abs(piece.nodeX[i][0]) <= tolerance;
+    return onAxis;
+}
+
+}  // namespace
+
+double solidOfRevolutionVolume(const SolidPiece& piece, const std::vector<Vec3>& nodes) {
+    const std::vector<bool> onAxis = nodesOnAxis(piece);
+    double moment = 0.0;  // ∫ r dA = Σ over the edges of (r_i + r_j)(r_i y_j − r_j y_i) / 6
+    for (const auto& quad : piece.quads)
+        for (int c = 0; c < 4; ++c) {
+            const auto i = static_cast<std::size_t>(quad[c]);
+            const auto j = static_cast<std::size_t>(quad[(c + 1) % 4]);
+            const double ri = onAxis[i] ? 0.0 : nodes[i][0], rj = onAxis[j] ? 0.0 : nodes[j][0];
+            moment += (ri + rj) * (ri * nodes[j][1] - rj * nodes[i][1]) / 6.0;
+        }
+    return 2.0 * std::numbers::pi * moment;
+}
+
+RevolvedCells revolveSection(const SolidPiece& piece, const std::vector<Vec3>& nodes, int sectors) {
+    RevolvedCells out;
+    const double step = 2.0 * std::numbers::pi / sectors;
+    // Node ids: a node on the axis once, every other node once per angle 2π k/N.
+    std::vector<Index> first(nodes.size());
+    const std::vector<bool> onAxis = nodesOnAxis(piece);
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        first[i] = static_cast<Index>(out.nodes.size());
+        const int copies = onAxis[i] ? 1 : sectors;
+        for (int k = 0; k < copies; ++k) {
+            const double phi = k * step, c = std::cos(phi), s = std::sin(phi);
+            const double r = onAxis[i] ? 0.0 : nodes[i][0], R = onAxis[i] ? 0.0 : piece.nodeX[i][0];
+            out.nodes.emplace_back(r * c, nodes[i][1], r * s);
+            out.nodeX.emplace_back(R * c, piece.nodeX[i][1], R * s);
+        }
+    }
+    auto id = [&](Index node, int k) {
+        const auto i = static_cast<std::size_t>(node);
+        return onAxis[i] ? first[i] : first[i] + k % sectors;
+    };
+    for (int sector = 0; sector < sectors; ++sector) {
+        for (std::size_t q = 0; q < piece.quads.size(); ++q) {
+            const std::array<Index, 4>& quad = piece.quads[q];
+            std::array<Index, 8> hex;
+            for (int c = 0; c < 4; ++c) {
+                hex[c] = id(quad[c], sector);
+                hex[c + 4] = id(quad[c], sector + 1);
+            }
+            // The corners on the axis; two adjacent ones (an edge i → j on it) make a wedge.
+            int axisCorners = 0, edge = -1;
+            for (int c = 0; c < 4; ++c) {
+                const auto n = static_cast<std::size_t>(quad[c]);
+                const auto next = static_cast<std::size_t>(quad[(c + 1) % 4]);
+                axisCorners += onAxis[n];
+                if (onAxis[n] && onAxis[next]) edge = c;
+            }
+            out.offsets.push_back(static_cast<Index>(out.connectivity.size()));
+            if (axisCorners == 2 && edge >= 0) {
+                // Triangles swept by the edges j → k and i → l (the quadrilateral runs i, j, k,
+                // l counter-clockwise): the first's normal points away from the second, as
+                // VTK_WEDGE wants, because the quadrilateral turns counter-clockwise.
+                const int i = edge, j = (edge + 1) % 4, k = (edge + 2) % 4, l = (edge + 3) % 4;
+                for (const Index node : {hex[j], hex[k], hex[k + 4], hex[i], hex[l], hex[l + 4]})
+                    out.connectivity.push_back(node);
+                out.type.push_back(RevolvedCells::kWedge);
+            } else {
+                for (const Index node : hex) out.connectivity.push_back(node);
+                out.type.push_back(RevolvedCells::kHexahedron);
+            }
+            out.hexes.push_back(hex);
+            out.particle.push_back(piece.particle[q]);
+            out.angle.push_back((sector + 0.5) * step);
+        }
+    }
+    out.offsets.push_back(static_cast<Index>(out.connectivity.size()));
+    return out;
+}
+
+double RevolvedCells::volume() const {
+    // A wedge is the hexahedron with its axis edge collapsed: the same faces, the same volume.
+    double total = 0.0;
+    for (const auto& hex : hexes) {
+        std::array<Vec3, 8> x;
+        for (int c = 0; c < 8; ++c) x[c] = nodes[static_cast<std::size_t>(hex[c])];
+        total += hexahedronVolume(x);
+    }
+    return total;
 }
 
 ParticleFileLocation locateParticleFile(const std::filesystem::path& runDir,

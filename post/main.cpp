@@ -3,15 +3,24 @@
 //
 // Usage:   gsph-post RUNDIR [-o OUTDIR] [--field NAME] [--times T1,T2,...] [--size W,H]
 //                    [--particles FILE] [--no-pictures] [--no-cracks] [--no-solid]
+//                    [--revolve N]
 // Sample:  gsph-post run/graded_bar
 //          gsph-post run/graded_bar --field plastic_strain --times 1e-5,3e-5
+//          gsph-post run/axisymmetric_bar --revolve 24
 // Description: writes OUTDIR (default RUNDIR/post) with
 //   run.pvd + snapshot_NNNNNN.vtu    particles with every field (open run.pvd in ParaView),
 //   solid.pvd + solid_NNNNNN.vtm     the solid: the hexahedral cells of every space (one
 //     + solid_NNNNNN_sS.vtu          .vtu per space S) with the fields as cell data (Slice,
-//                                    Clip, surface rendering); needs the run's particle file
-//                                    (--particles, else the one checkpoint.h5 names, else
-//                                    RUNDIR/particles.h5),
+//                                    Clip, surface rendering); a 2-D run (plane strain or
+//                                    axisymmetric) gives its section instead: one
+//                                    quadrilateral per particle in the x-y plane; needs the
+//                                    run's particle file (--particles, else the one
+//                                    checkpoint.h5 names, else RUNDIR/particles.h5),
+//   solid_revolved.pvd + solid_revolved_NNNNNN.vtm + _sS.vtu   with --revolve N (N ≥ 3, an
+//                                    axisymmetric run): the section swept about the y axis
+//                                    into N sectors of hexahedra (wedges at the axis), each
+//                                    with its particle's fields, vectors and tensors turned
+//                                    into the sector (a 3-D particle file is an error),
 //   cracks.pvd + crack_NNNNNN.vtp    crack surfaces (Voronoi facets of the broken bonds),
 //   FIELD_NNNNNN.png                 the deformed solid (or particles without the particle
 //                                    file) coloured by FIELD at each of --times
@@ -218,6 +227,7 @@ int main(int argc, char** argv) {
     std::string runDir, outDir, field = "von_mises", particlesOption;
     std::vector<double> times;
     bool noPictures = false, noCracks = false, noSolid = false;
+    int revolve = 0;
     app.add_option("rundir", runDir, "run folder written by gsph-solve")->required();
     app.add_option("-o,--output", outDir, "output folder (default: RUNDIR/post)");
     app.add_option("--field", field, "field of the pictures")
@@ -237,7 +247,13 @@ int main(int argc, char** argv) {
     app.add_option("--particles", particlesOption,
                    "the run's particle file, for the solid (default: the one checkpoint.h5 "
                    "names, else RUNDIR/particles.h5)");
-    app.add_flag("--no-solid", noSolid, "write no solid (hexahedra), only the particles");
+    auto* noSolidFlag =
+        app.add_flag("--no-solid", noSolid, "write no solid (hexahedra), only the particles");
+    app.add_option("--revolve", revolve,
+                   "an axisymmetric run's section swept about the y axis into N sectors "
+                   "(solid_revolved.pvd)")
+        ->check(CLI::Range(3, 3600))
+        ->excludes(noSolidFlag);
     // Internal: the pictures' child process under xvfb-run (picturesUnderXvfb).
     std::vector<std::string> picturesOf;
     bool finalPicture = false;
@@ -265,7 +281,8 @@ int main(int argc, char** argv) {
         const auto start = std::chrono::steady_clock::now();
         const double cpuStart = cpuSeconds();
 
-        std::vector<std::pair<double, std::string>> series, crackSeries, solidSeries;
+        std::vector<std::pair<double, std::string>> series, crackSeries, solidSeries,
+            revolvedSeries;
         RunSolid solid;                                     // built at the first snapshot
         std::unique_ptr<gsph::post::CrackSurfaces> cracks;  // the run's Delaunay, built once
         bool cracksPossible = !noCracks;
@@ -282,7 +299,22 @@ int main(int argc, char** argv) {
                                        std::to_string(last.size()));
             const std::string stem = p.stem().string();
             const std::string vtu = stem + ".vtu";
-            if (k == 0 && !noSolid) solid = loadSolid(runDir, particlesOption, snap.X);
+            if (k == 0 && !noSolid) {
+                solid = loadSolid(runDir, particlesOption, snap.X);
+                if (revolve > 0) {
+                    if (!solid.solid)
+                        throw gsph::InputError(runDir +
+                                               ": --revolve needs the run's particle file (no "
+                                               "solid, see above); pass --particles FILE");
+                    gsph::post::requireRevolvableSection(*solid.solid, revolve,
+                                                         solid.path.string());
+                }
+            }
+            // A planar run has no crack surfaces to draw: say so once, write no empty ones.
+            if (k == 0 && cracksPossible && !spansThreeDimensions(snap.X)) {
+                std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
+                cracksPossible = false;
+            }
             gsph::post::writeVtu(out / vtu, snap, solid.labels);
             series.emplace_back(snap.state.time, vtu);
             if (solid.solid) {
@@ -290,25 +322,26 @@ int main(int argc, char** argv) {
                     "solid_" + stem.substr(std::string("snapshot_").size()) + ".vtm";
                 gsph::post::writeSolid(out / vtm, *solid.solid, snap, solid.labels);
                 solidSeries.emplace_back(snap.state.time, vtm);
+                if (revolve > 0) {
+                    const std::string revolved =
+                        "solid_revolved_" + stem.substr(std::string("snapshot_").size()) + ".vtm";
+                    gsph::post::writeSolid(out / revolved, *solid.solid, snap, solid.labels,
+                                           revolve);
+                    revolvedSeries.emplace_back(snap.state.time, revolved);
+                }
             }
             if (cracksPossible) {
                 gsph::post::CrackSurface surface;
                 if (!snap.brokenBonds.empty()) {
                     if (!cracks) {
-                        if (!spansThreeDimensions(snap.X)) {
-                            std::printf("gsph-post: a planar (2-D) run: no crack surfaces\n");
+                        const double t0 = cpuSeconds();
+                        try {
+                            cracks = std::make_unique<gsph::post::CrackSurfaces>(snap.X, snap.body);
+                        } catch (const gsph::InputError& e) {
+                            std::printf("gsph-post: no crack surfaces: %s\n", e.what());
                             cracksPossible = false;
-                        } else {
-                            const double t0 = cpuSeconds();
-                            try {
-                                cracks =
-                                    std::make_unique<gsph::post::CrackSurfaces>(snap.X, snap.body);
-                            } catch (const gsph::InputError& e) {
-                                std::printf("gsph-post: no crack surfaces: %s\n", e.what());
-                                cracksPossible = false;
-                            }
-                            crackSetup = cpuSeconds() - t0;
                         }
+                        crackSetup = cpuSeconds() - t0;
                     }
                     if (cracks) surface = cracks->surface(snap);
                 }
@@ -334,17 +367,40 @@ int main(int argc, char** argv) {
             const gsph::post::HexSolid& s = *solid.solid;
             const double particleVolume = s.particleVolume(last);
             const double solidVolume = s.currentVolume(last);
+            const bool planar = s.dimension() == 2;
             std::printf(
-                "gsph-post: solid -> %s (open solid.pvd in ParaView): %zu spaces, %zu hexahedra, "
+                "gsph-post: solid -> %s (open solid.pvd in ParaView): %zu spaces, %zu %s, "
                 "nodes %s %s\n",
-                (out / "solid.pvd").c_str(), s.pieces().size(), s.hexahedra(),
+                (out / "solid.pvd").c_str(), s.pieces().size(), s.cells(),
+                planar ? "quadrilaterals (a 2-D run's section)" : "hexahedra",
                 s.estimatedNodes() ? "estimated from the particles: no /spaces/nodes in" : "from",
                 solid.source.c_str());
+            // A 2-D run's section: areas, against Σ V det F of F's in-plane block.
+            const char* unit = planar ? "m²" : "m³";
             std::printf(
-                "gsph-post: solid volume: reference %.9g m³ (Σ V %.9g m³), last snapshot %.9g m³ "
-                "(Σ V J %.9g m³, %+.3g %%)\n",
-                s.referenceVolume(), s.particleVolume(), solidVolume, particleVolume,
+                "gsph-post: solid %s: reference %.9g %s (Σ V %.9g %s), last snapshot %.9g %s "
+                "(Σ V %s %.9g %s, %+.3g %%)\n",
+                planar ? "area" : "volume", s.referenceVolume(), unit, s.particleVolume(), unit,
+                solidVolume, unit, planar ? "det F_xy" : "J", particleVolume, unit,
                 100.0 * (solidVolume - particleVolume) / particleVolume);
+            if (revolve > 0) {
+                gsph::post::writePvd(out / "solid_revolved.pvd", revolvedSeries);
+                std::size_t cells = 0;
+                double volume = 0.0, pappus = 0.0;
+                for (const gsph::post::SolidPiece& piece : s.pieces()) {
+                    const std::vector<gsph::Vec3> x = s.currentNodes(piece, last);
+                    const gsph::post::RevolvedCells r =
+                        gsph::post::revolveSection(piece, x, revolve);
+                    cells += r.cells();
+                    volume += r.volume();
+                    pappus += gsph::post::solidOfRevolutionVolume(piece, x);
+                }
+                std::printf(
+                    "gsph-post: revolved solid -> %s: %d sectors, %zu cells; last snapshot %.9g "
+                    "m³ (the section's solid of revolution %.9g m³: the %d-gon's %.6f)\n",
+                    (out / "solid_revolved.pvd").c_str(), revolve, cells, volume, pappus, revolve,
+                    volume / pappus);
+            }
         }
         if (cracksPossible) {
             gsph::post::writePvd(out / "cracks.pvd", crackSeries);

@@ -106,7 +106,7 @@ vtkSmartPointer<vtkUnstructuredGrid> pieceWithField(const HexSolid& solid, const
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
     }
-    const auto nc = static_cast<vtkIdType>(piece.hexes.size());
+    const auto nc = static_cast<vtkIdType>(piece.cells());
     vtkNew<vtkDoubleArray> values;
     values->SetName(field.c_str());
     values->SetNumberOfTuples(nc);
@@ -116,7 +116,7 @@ vtkSmartPointer<vtkUnstructuredGrid> pieceWithField(const HexSolid& solid, const
                            field));
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(points);
-    grid->SetCells(VTK_HEXAHEDRON, hexahedronCells(piece));
+    grid->SetCells(solidCellType(piece), solidCells(piece));
     grid->GetCellData()->SetScalars(values);
     return grid;
 }
@@ -179,10 +179,10 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
         "  ambientColor *= shade; diffuseColor *= shade; }\n");
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
-    // The solid instead of the particles: each space's hexahedra, surface rendered; a compact
-    // 3-D body (every extent at least a quarter of the largest) is cut through its middle
-    // (the half beyond the plane y = centre kept, the cut face towards the camera), so the
-    // picture shows the inside too.
+    // The solid instead of the particles: each space's hexahedra (a 2-D run's quadrilaterals,
+    // seen face on), surface rendered; a compact 3-D body (every extent at least a quarter of
+    // the largest) is cut through its middle (the half beyond the plane y = centre kept, the
+    // cut face towards the camera), so the picture shows the inside too.
     std::vector<vtkSmartPointer<vtkActor>> solidActors;
     bool cut = false;
     if (solid != nullptr) {
@@ -236,7 +236,10 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
     char text[128];
     std::snprintf(text, sizeof text, "t = %.4g s   (%d particles%s)", s.state.time,
                   static_cast<int>(n),
-                  solid == nullptr ? "" : (cut ? ", solid cut at mid-y" : ", solid"));
+                  solid == nullptr          ? ""
+                  : solid->dimension() == 2 ? ", the 2-D section"
+                  : cut                     ? ", solid cut at mid-y"
+                                            : ", solid");
     title->SetInput(text);
     title->GetTextProperty()->SetFontSize(22);
     title->GetTextProperty()->SetColor(0.1, 0.1, 0.1);

@@ -304,24 +304,32 @@ void writeVtu(const std::filesystem::path& path, const Snapshot& snap, const Run
     writeXml<vtkXMLUnstructuredGridWriter>(path, grid.GetPointer());
 }
 
-vtkSmartPointer<vtkCellArray> hexahedronCells(const SolidPiece& piece) {
-    const auto nc = static_cast<vtkIdType>(piece.hexes.size());
+vtkSmartPointer<vtkCellArray> solidCells(const SolidPiece& piece) {
+    const auto nc = static_cast<vtkIdType>(piece.cells());
+    const int corners = piece.planar() ? 4 : 8;
     vtkNew<vtkIdTypeArray> offsets, connectivity;
     offsets->SetNumberOfTuples(nc + 1);
-    connectivity->SetNumberOfTuples(8 * nc);
+    connectivity->SetNumberOfTuples(corners * nc);
     vtkIdType* off = offsets->GetPointer(0);
     vtkIdType* con = connectivity->GetPointer(0);
-    for (vtkIdType h = 0; h <= nc; ++h) off[h] = 8 * h;
-    for (vtkIdType h = 0; h < nc; ++h)
-        for (int c = 0; c < 8; ++c) con[8 * h + c] = piece.hexes[static_cast<std::size_t>(h)][c];
+    for (vtkIdType c = 0; c <= nc; ++c) off[c] = corners * c;
+    for (vtkIdType c = 0; c < nc; ++c)
+        for (int k = 0; k < corners; ++k)
+            con[corners * c + k] = piece.planar() ? piece.quads[static_cast<std::size_t>(c)][k]
+                                                  : piece.hexes[static_cast<std::size_t>(c)][k];
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     cells->SetData(offsets, connectivity);
     return cells;
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const SolidPiece& piece,
-                                               const Snapshot& snap, const RunLabels& labels) {
-    const std::vector<Vec3> x = solid.currentNodes(piece, snap);
+int solidCellType(const SolidPiece& piece) {
+    return piece.planar() ? VTK_QUAD : VTK_HEXAHEDRON;
+}
+
+namespace {
+
+// Points of a grid and their node_displacement array (x − X).
+void setNodes(vtkUnstructuredGrid* grid, const std::vector<Vec3>& x, const std::vector<Vec3>& X) {
     const auto np = static_cast<vtkIdType>(x.size());
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -333,14 +341,76 @@ vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const Soli
         const auto k = static_cast<std::size_t>(i);
         for (int d = 0; d < 3; ++d) {
             xp[3 * i + d] = x[k][d];
-            up[3 * i + d] = x[k][d] - piece.nodeX[k][d];
+            up[3 * i + d] = x[k][d] - X[k][d];
         }
     }
-    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
     grid->SetPoints(points);
-    grid->SetCells(VTK_HEXAHEDRON, hexahedronCells(piece));
     grid->GetPointData()->AddArray(nodeDisplacement);
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const SolidPiece& piece,
+                                               const Snapshot& snap, const RunLabels& labels) {
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    setNodes(grid, solid.currentNodes(piece, snap), piece.nodeX);
+    grid->SetCells(solidCellType(piece), solidCells(piece));
     addParticleArrays(grid->GetCellData(), snap, Rows{&piece.particle, 0});
+    addFieldData(grid, snap, labels);
+    return grid;
+}
+
+static_assert(RevolvedCells::kHexahedron == VTK_HEXAHEDRON && RevolvedCells::kWedge == VTK_WEDGE);
+
+vtkSmartPointer<vtkUnstructuredGrid> revolvedGrid(const HexSolid& solid, const SolidPiece& piece,
+                                                  const Snapshot& snap, const RunLabels& labels,
+                                                  int sectors) {
+    const RevolvedCells r = revolveSection(piece, solid.currentNodes(piece, snap), sectors);
+    auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    setNodes(grid, r.nodes, r.nodeX);
+    const auto nc = static_cast<vtkIdType>(r.cells());
+    vtkNew<vtkUnsignedCharArray> types;
+    types->SetNumberOfTuples(nc);
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfTuples(nc + 1);
+    connectivity->SetNumberOfTuples(static_cast<vtkIdType>(r.connectivity.size()));
+    for (vtkIdType c = 0; c < nc; ++c)
+        types->SetValue(c, static_cast<unsigned char>(r.type[static_cast<std::size_t>(c)]));
+    for (vtkIdType c = 0; c <= nc; ++c)
+        offsets->SetValue(c, r.offsets[static_cast<std::size_t>(c)]);
+    for (std::size_t k = 0; k < r.connectivity.size(); ++k)
+        connectivity->SetValue(static_cast<vtkIdType>(k), r.connectivity[k]);
+    vtkNew<vtkCellArray> cells;
+    cells->SetData(offsets, connectivity);
+    grid->SetCells(types, cells);
+    vtkCellData* cd = grid->GetCellData();
+    addParticleArrays(cd, snap, Rows{&r.particle, 0});
+    // Every 3-component array is a vector, every 9-component one a tensor (row-major), in the
+    // run's (r, axis, hoop) frame: turned about y by the cell's angle.
+    for (int k = 0; k < cd->GetNumberOfArrays(); ++k) {
+        auto* array = vtkDoubleArray::SafeDownCast(cd->GetArray(k));
+        if (array == nullptr) continue;
+        const int components = array->GetNumberOfComponents();
+        if (components != 3 && components != 9) continue;
+        double* p = array->GetPointer(0);
+        parallelFor(nc, [&](std::ptrdiff_t c) {
+            const double phi = r.angle[static_cast<std::size_t>(c)];
+            Mat3 R;
+            R << std::cos(phi), 0.0, -std::sin(phi), 0.0, 1.0, 0.0, std::sin(phi), 0.0,
+                std::cos(phi);
+            if (components == 3) {
+                const Vec3 v = R * Vec3(p[3 * c], p[3 * c + 1], p[3 * c + 2]);
+                for (int d = 0; d < 3; ++d) p[3 * c + d] = v[d];
+            } else {
+                Mat3 t;
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j) t(i, j) = p[9 * c + 3 * i + j];
+                const Mat3 turned = R * t * R.transpose();
+                for (int i = 0; i < 3; ++i)
+                    for (int j = 0; j < 3; ++j) p[9 * c + 3 * i + j] = turned(i, j);
+            }
+        });
+    }
     addFieldData(grid, snap, labels);
     return grid;
 }
@@ -354,7 +424,7 @@ std::string solidBlockName(const SolidPiece& piece, const RunLabels& labels) {
 }
 
 void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snap,
-                const RunLabels& labels) {
+                const RunLabels& labels, int sectors) {
     const std::string stem = vtm.stem().string();
     std::ostringstream out;
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" "
@@ -362,7 +432,9 @@ void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const S
     int index = 0;
     for (const SolidPiece& piece : solid.pieces()) {
         const std::string file = stem + "_s" + std::to_string(piece.space) + ".vtu";
-        vtkSmartPointer<vtkUnstructuredGrid> grid = solidGrid(solid, piece, snap, labels);
+        vtkSmartPointer<vtkUnstructuredGrid> grid =
+            sectors > 0 ? revolvedGrid(solid, piece, snap, labels, sectors)
+                        : solidGrid(solid, piece, snap, labels);
         writeXml<vtkXMLUnstructuredGridWriter>(vtm.parent_path() / file, grid.GetPointer());
         out << "    <DataSet index=\"" << index++ << "\" name=\""
             << xmlEscaped(solidBlockName(piece, labels)) << "\" file=\"" << xmlEscaped(file)

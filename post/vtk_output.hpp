@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // ParaView output of gsph-post (docs/formats.md, "gsph-post output"): per snapshot one .vtu
-// point cloud, the solid (a .vtm of one .vtu of hexahedra per space, hex_solid.hpp) and one
-// .vtp crack surface, and .pvd time series of each.
+// point cloud, the solid (a .vtm of one .vtu of hexahedra per space, quadrilaterals for a 2-D
+// run, hex_solid.hpp; optionally a 2-D run's section revolved) and one .vtp crack surface, and
+// .pvd time series of each.
 // Per-particle arrays (point data of the cloud, cell data of the solid): displacement, velocity
 // (3 components), stress (Cauchy, 9 components XX … ZZ, row-major), von_mises, pressure,
 // plastic_strain, temperature, damage, bond_damage, J, radius, reference_volume (float64), id,
@@ -46,21 +47,33 @@ struct RunLabels {
 void writeVtu(const std::filesystem::path& path, const Snapshot& snapshot,
               const RunLabels& labels = {});
 
-/// The hexahedra of a piece as a VTK cell array (VTK_HEXAHEDRON node ids).
-vtkSmartPointer<vtkCellArray> hexahedronCells(const SolidPiece& piece);
+/// The cells of a piece as a VTK cell array: VTK_HEXAHEDRON node ids, or VTK_QUAD ones for a
+/// 2-D piece (solidCellType).
+vtkSmartPointer<vtkCellArray> solidCells(const SolidPiece& piece);
+int solidCellType(const SolidPiece& piece);
 
-/// One piece of the solid in a snapshot: its hexahedra at the current node positions, the
+/// One piece of the solid in a snapshot: its cells at the current node positions, the
 /// particle arrays as cell data, node_displacement (x_n − X_n) as point data.
 vtkSmartPointer<vtkUnstructuredGrid> solidGrid(const HexSolid& solid, const SolidPiece& piece,
                                                const Snapshot& snapshot, const RunLabels& labels);
+
+/// One 2-D piece swept about the y axis into `sectors` sectors (revolveSection): hexahedra and
+/// wedges with the arrays of their particles as cell data, vectors (3 components) and tensors
+/// (9) rotated into the sector: the run's frame (x, y, z) is the local (r, axis, hoop) frame,
+/// turned by the sector's middle angle φ about y (v = (v_r, v_y, v_θ) becomes
+/// (v_r cos φ − v_θ sin φ, v_y, v_r sin φ + v_θ cos φ), σ becomes R σ Rᵀ).
+vtkSmartPointer<vtkUnstructuredGrid> revolvedGrid(const HexSolid& solid, const SolidPiece& piece,
+                                                  const Snapshot& snapshot, const RunLabels& labels,
+                                                  int sectors);
 
 /// The block name of a piece: "BODY space S" (BODY = the body's name, or "body B").
 std::string solidBlockName(const SolidPiece& piece, const RunLabels& labels);
 
 /// Writes the solid of a snapshot: each piece as STEM_sS.vtu (S its space) beside `vtm`, then
-/// the multiblock file `vtm` (STEM.vtm) naming them, one block per space.
+/// the multiblock file `vtm` (STEM.vtm) naming them, one block per space. `sectors` > 0: each
+/// piece revolved (revolvedGrid) instead.
 void writeSolid(const std::filesystem::path& vtm, const HexSolid& solid, const Snapshot& snapshot,
-                const RunLabels& labels);
+                const RunLabels& labels, int sectors = 0);
 
 /// A crack surface as VTK polygons (may be empty: no points, no polygons).
 void writeVtp(const std::filesystem::path& path, const CrackSurface& surface);
