@@ -483,8 +483,9 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
     }
 }
 
-/// The number of 2-D elements of the model, and the first whose node no hexahedron uses
-/// (-1 if none): such an element is not a face of the 3-D mesh but a 2-D mesh beside it.
+/// The number of 2-D elements of the model, and the first surface with an element that has a
+/// node no hexahedron uses (-1 if none, or if there are no hexahedra): such a surface is not
+/// part of the 3-D mesh's boundary but a 2-D mesh beside it.
 std::pair<std::size_t, long> countPlaneElements(const NodeIds& ids, const HexMesh& mesh) {
     std::vector<char> hexNode(mesh.nodes.size(), 0);
     for (const auto& hex : mesh.hexes)

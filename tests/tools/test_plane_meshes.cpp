@@ -219,6 +219,19 @@ TEST(Preproc2d, OgridDiscIsAnOversetBodyInThePlane) {
     EXPECT_LT(error, 1e-13);
 }
 
+TEST(Preproc2d, ClockwiseQuadsConvertLikeCounterClockwiseOnes) {
+    // gmsh's quads run clockwise here (normal −z): turned before extrusion, they give positive
+    // volumes and a right-handed in-plane frame.
+    const Conversion c = convert(fixture("clockwise_square_2d.geo"));
+    const ParticleFile& f = c.particles;
+    expectPlaneFile(f);
+    test::expectLatticeLayout(f);
+    EXPECT_EQ(f.size(), 9);
+    EXPECT_NEAR(totalVolume(f), 1.0, 1e-12);
+    EXPECT_LT((totalArea(f, "bottom") - Vec3(0, -1, 0)).norm(), 1e-12);
+    EXPECT_LT(restDeformationError(f), 1e-13);
+}
+
 TEST(Preproc2d, UniformLatticeInThePlane) {
     const double W = 0.04, H = 0.02;
     ConversionOptions options;
