@@ -13,6 +13,11 @@ namespace {
 
 [[noreturn]] void notStructured(const HexMesh& mesh, const HexVolume& volume,
                                 const std::string& why) {
+    if (mesh.dimension == 2) {
+        throw MeshError(mesh.source + ": surface " + std::to_string(volume.tag) +
+                        " is not a structured quad block (" + why +
+                        "); mesh it with Transfinite Curve/Surface + Recombine Surface");
+    }
     throw MeshError(mesh.source + ": volume " + std::to_string(volume.tag) +
                     " is not a structured hex block (" + why +
                     "); mesh it with Transfinite Curve/Surface/Volume + Recombine, or extrude a "

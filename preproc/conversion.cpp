@@ -2,6 +2,7 @@
 #include "conversion.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <map>
@@ -43,23 +44,27 @@ std::vector<Index> assignBodies(const HexMesh& mesh, std::vector<BodyInfo>& bodi
             Index& body = bodyOfVolume[it->second];
             if (body >= 0 && body != static_cast<Index>(b)) {
                 throw MeshError(
-                    mesh.source + ": volume " + std::to_string(tag) +
-                    " is in two physical volume groups, " +
+                    mesh.source + ": " + blockEntity(mesh) + " " + std::to_string(tag) +
+                    " is in two physical " + blockEntity(mesh) + " groups, " +
                     groupLabel(mesh.volumeGroups[body].name, mesh.volumeGroups[body].tag) +
-                    " and " + groupLabel(g.name, g.tag) + "; a volume belongs to one body");
+                    " and " + groupLabel(g.name, g.tag) + "; a " + blockEntity(mesh) +
+                    " belongs to one body");
             }
             body = static_cast<Index>(b);
         }
         if (!holdsHexes) {
-            throw MeshError(mesh.source + ": physical volume " + groupLabel(g.name, g.tag) +
-                            " holds no hexahedra");
+            throw MeshError(mesh.source + ": physical " + blockEntity(mesh) + " " +
+                            groupLabel(g.name, g.tag) + " holds no " +
+                            (mesh.dimension == 2 ? "quadrangles" : "hexahedra"));
         }
     }
     for (std::size_t v = 0; v < mesh.volumes.size(); ++v) {
         if (bodyOfVolume[v] < 0) {
-            throw MeshError(mesh.source + ": volume " + std::to_string(mesh.volumes[v].tag) +
-                            " is in no physical volume group; put every volume in exactly one "
-                            "(each group is a body)");
+            const std::string entity = blockEntity(mesh);
+            throw MeshError(mesh.source + ": " + entity + " " +
+                            std::to_string(mesh.volumes[v].tag) + " is in no physical " + entity +
+                            " group; put every " + entity +
+                            " in exactly one (each group is a body)");
         }
     }
     return bodyOfVolume;
@@ -79,9 +84,9 @@ void checkCollapsedEdges(const HexMesh& mesh, const HexVolume& v, Index h, const
         for (int a = 0; a < 3; ++a) {
             const int d = c | (1 << a);
             if (d == c || (x[d] - x[c]).norm() > 1e-12 * edges[1]) continue;
-            throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                            " in volume " + std::to_string(v.tag) + " is degenerate: its edge at " +
-                            point(x[c]) +
+            throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) + " in " +
+                            blockEntity(mesh) + " " + std::to_string(v.tag) +
+                            " is degenerate: its edge at " + point(x[c]) +
                             " has zero length, so the block collapses onto a line or point "
                             "there, like a cylindrical space on its axis, where dX/dtheta is "
                             "singular; cover the axis with a Cartesian core block (an O-grid, "
@@ -99,7 +104,7 @@ void checkElementOrientation(const HexMesh& mesh) {
             if (!(minCornerJacobian(x) > 0.0)) {
                 checkCollapsedEdges(mesh, v, h, x);  // a collapsed edge has its own message
                 throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                                " in volume " + std::to_string(v.tag) + " at " +
+                                " in " + blockEntity(mesh) + " " + std::to_string(v.tag) + " at " +
                                 point(hexCentre(x)) +
                                 " is inverted or degenerate (its Jacobian is not positive at "
                                 "every corner)");
@@ -118,8 +123,8 @@ void buildSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
             std::array<Index, 2> found{};
             const int n = adjacency.hexesWithFace(quad, -1, found);
             if (n == 0) {
-                throw MeshError(mesh.source + ": physical surface '" + name +
-                                "' has a quadrilateral that is not a face of any hexahedron");
+                throw MeshError(mesh.source + ": physical " + setEntity(mesh) + " '" + name +
+                                strayFaceFault(mesh));
             }
             for (int k = 0; k < std::min(n, 2); ++k) {
                 const Index particle = particleOfHex[found[k]];
@@ -179,8 +184,8 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                 const double cornerJacobian = minCornerJacobian(x);
                 if (!(cornerJacobian > 0.0)) {
                     throw MeshError(mesh.source + ": element " + std::to_string(mesh.hexTags[h]) +
-                                    " in volume " + std::to_string(block.volumeTag) + " at " +
-                                    point(hexCentre(x)) +
+                                    " in " + blockEntity(mesh) + " " +
+                                    std::to_string(block.volumeTag) + " at " + point(hexCentre(x)) +
                                     " is inverted (the structured grid folds there)");
                 }
                 const Int3 c = space.cellOf(entry, {i, j, k});
@@ -193,7 +198,8 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                 // Condition of ∂X/∂θ at the centre (the block frame's columns are the
                 // space's up to order and sign, which the singular values ignore).
                 const Mat3 J = hexJacobian(x, Vec3::Zero());
-                const int thin = oneLayerAxis(space.cells);
+                // A 2-D space's in-plane metric is what matters, whatever its in-plane cells.
+                const int thin = mesh.dimension == 2 ? 2 : oneLayerAxis(space.cells);
                 as.condition[a] = jacobianCondition(J);
                 as.inPlane[a] =
                     thin < 0 ? 1.0 : jacobianCondition(J, space.toSpace[entry].R.perm[thin]);
@@ -208,7 +214,7 @@ void placeBlock(const HexMesh& mesh, const GluedSpace& space, std::size_t entry,
                 as.block[a] = space.blocks[entry];
                 as.blockCell[a] = {i, j, k};
                 as.out.elementOfParticle[a] = mesh.hexTags[h];
-                const auto edges = edgeLengthRange(x);
+                const auto edges = edgeLengthRange(x, mesh.dimension == 2 ? depthAxis(x) : -1);
                 stats.minEdge = std::min(stats.minEdge, edges[0]);
                 stats.maxEdge = std::max(stats.maxEdge, edges[1]);
             }
@@ -308,7 +314,7 @@ void reportMetric(const Assembly& as, Conversion& out) {
     const ParticleFile& pf = out.particles;
     out.stats.metric.assign(pf.spaces.size(), MetricReport{});
     for (std::size_t s = 0; s < pf.spaces.size(); ++s) {
-        out.stats.metric[s].oneLayerAxis = oneLayerAxis(pf.spaces[s].cells);
+        out.stats.metric[s].oneLayerAxis = pf.dimension == 2 ? 2 : oneLayerAxis(pf.spaces[s].cells);
     }
     for (Index a = 0; a < pf.size(); ++a) {
         MetricReport& m = out.stats.metric[static_cast<std::size_t>(pf.space[a])];
@@ -348,6 +354,72 @@ void reportMetric(const Assembly& as, Conversion& out) {
     }
 }
 
+/// In a 2-D mesh (quads extruded to unit depth along z), turns every space so that its third
+/// index runs along the extrusion, towards +z: the 2-D file has its one cell along index 2,
+/// and the in-plane frame (i, j) stays right-handed. Block frames follow x, y, z
+/// (block_indexing.hpp), so this is the identity unless gluing turned a space.
+void alignExtrusionAxis(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
+                        GluingResult& glued) {
+    for (GluedSpace& space : glued.spaces) {
+        const BlockLattice& block = blocks[static_cast<std::size_t>(space.blocks[0])];
+        const Vec3& origin = mesh.nodes[static_cast<std::size_t>(block.node(0, 0, 0))];
+        int blockAxis = -1, blockSign = 0;
+        for (int a = 0; a < 3 && blockAxis < 0; ++a) {
+            if (block.cells[a] != 1) continue;
+            const Index far = block.node(a == 0, a == 1, a == 2);
+            const Vec3 step = mesh.nodes[static_cast<std::size_t>(far)] - origin;
+            if (step[0] == 0.0 && step[1] == 0.0 && std::abs(step[2]) == 1.0) {
+                blockAxis = a;
+                blockSign = step[2] > 0.0 ? 1 : -1;
+            }
+        }
+        if (blockAxis < 0) {
+            throw MeshError(mesh.source + ": internal error: surface " +
+                            std::to_string(block.volumeTag) + "'s block is not one layer thick");
+        }
+        const SignedPermutation& toSpace = space.toSpace[0].R;
+        int axis = 0;
+        while (toSpace.perm[axis] != blockAxis) ++axis;
+        const int sign = toSpace.sign[axis] * blockSign;
+        if (axis == 2 && sign == 1) continue;
+        SignedPermutation turn;
+        for (const SignedPermutation& r : SignedPermutation::rotations()) {
+            if (r.perm[2] == axis && r.sign[2] == sign) {
+                turn = r;
+                break;
+            }
+        }
+        LatticeTransform shift{turn, {0, 0, 0}};
+        Int3 cells{};
+        std::array<bool, 3> periodic{};
+        for (int d = 0; d < 3; ++d) {
+            cells[d] = space.cells[turn.perm[d]];
+            periodic[d] = space.periodic[turn.perm[d]];
+            if (turn.sign[d] < 0) shift.t[d] = cells[d];
+        }
+        for (LatticeTransform& t : space.toSpace) t = shift.after(t);
+        space.cells = cells;
+        space.periodic = periodic;
+    }
+}
+
+/// A 2-D mesh's conversion, done on the unit-depth slab, as a 2-D particle file: X_z = θ_z = 0
+/// (particle and overset entries), set areas in the plane; volumes (the slab cells' volumes)
+/// already are the areas per metre of depth, and the nodes the slab's two layers.
+void flattenToPlane(const HexMesh& mesh, ParticleFile& pf) {
+    for (const LatticeSpace& space : pf.spaces) {
+        if (space.cells[2] != 1 || space.periodic[2]) {
+            throw MeshError(mesh.source +
+                            ": internal error: a 2-D space is not one cell along its third index");
+        }
+    }
+    pf.dimension = 2;
+    for (Vec3& X : pf.X) X[2] = 0.0;
+    for (Vec3& theta : pf.theta) theta[2] = 0.0;
+    for (Vec3& theta : pf.overset.theta) theta[2] = 0.0;
+    for (auto& [name, areas] : pf.setAreas)
+        for (Vec3& area : areas) area[2] = 0.0;
+}
 }  // namespace
 
 void storeParticleSet(const std::string& name, std::vector<std::pair<Index, Vec3>> pieces,
@@ -372,14 +444,15 @@ void storeParticleSet(const std::string& name, std::vector<std::pair<Index, Vec3
 
 std::string particleSetName(const HexMesh& mesh, const SurfaceGroup& group,
                             const ParticleFile& particles) {
-    const std::string name =
-        group.name.empty() ? "surface_" + std::to_string(group.tag) : group.name;
+    std::string name = group.name;
+    if (name.empty()) name = std::string(setEntity(mesh)) + '_' + std::to_string(group.tag);
     if (name.find('/') != std::string::npos || name == "." || name == "..") {
-        throw MeshError(mesh.source + ": physical surface '" + name +
+        throw MeshError(mesh.source + ": physical " + setEntity(mesh) + " '" + name +
                         "' cannot name a particle set ('/' is not allowed)");
     }
     if (particles.sets.count(name) != 0) {
-        throw MeshError(mesh.source + ": two physical surfaces are named '" + name + "'");
+        throw MeshError(mesh.source + ": two physical " + setEntity(mesh) + "s are named '" + name +
+                        "'");
     }
     return name;
 }
@@ -390,6 +463,7 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
     }
     Conversion out;
     ParticleFile& pf = out.particles;
+    pf.dimension = mesh.dimension;
     const std::vector<Index> bodyOfVolume = assignBodies(mesh, pf.bodies);
     checkElementOrientation(mesh);
 
@@ -397,12 +471,14 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
     std::vector<BlockLattice> blocks;
     blocks.reserve(mesh.volumes.size());
     for (const HexVolume& v : mesh.volumes) blocks.push_back(indexBlock(mesh, v, adjacency));
-    const GluingResult glued = glueBlocks(blocks, bodyOfVolume);
+    GluingResult glued = glueBlocks(blocks, bodyOfVolume);
+    if (mesh.dimension == 2) alignExtrusionAxis(mesh, blocks, glued);
     if (options.latticeSpacing != 0.0) {  // the uniform layout of standard SPH instead
         out.stats.minEdge = INFINITY;
         fillUniformLattice(mesh, blocks, glued, bodyOfVolume, adjacency, options.latticeSpacing,
                            out);
         if (options.onSpaces) options.onSpaces(out.particles, out.stats);
+        if (mesh.dimension == 2) flattenToPlane(mesh, pf);
         return out;
     }
 
@@ -460,6 +536,7 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
     applyOverset(mesh, blocks, glued, options, as);
     buildSets(mesh, adjacency, as.particleOfHex, out);
     reportMetric(as, out);
+    if (mesh.dimension == 2) flattenToPlane(mesh, pf);
     return out;
 }
 

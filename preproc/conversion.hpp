@@ -11,6 +11,9 @@
 // is an error (gmsh -3 would silently drop it from a .msh; here it is reported instead).
 // Sets: a surface group "name" (or "surface_<tag>" if unnamed) holds every particle whose hex
 // has a face on one of its surfaces.
+// 2-D meshes (HexMesh::dimension = 2, quads extruded to unit depth) are converted on that slab
+// and returned as a 2-D file: every space turned so that its one-cell index is the third,
+// X_z = θ_z = 0, set areas in the plane, volumes the cells' areas (per metre of depth).
 // Order: particles sorted by body, then space (spaces sorted by body, then smallest volume tag),
 // then lattice order within the space (i fastest, then j, then k; cut cells left out).
 // Errors: MeshError naming mesh.source and the fault (no hexahedra, inverted element, a block
@@ -97,7 +100,8 @@ struct Conversion {
 
 Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options = {});
 
-/// The particle set of a physical surface group: its name, or "surface_<tag>" when unnamed.
+/// The particle set of a physical surface group: its name, or "surface_<tag>" when unnamed
+/// ("curve_<tag>" in 2-D, where the group is a physical curve).
 /// Throws MeshError naming mesh.source if the name holds '/' or `particles` has it already.
 std::string particleSetName(const HexMesh& mesh, const SurfaceGroup& group,
                             const ParticleFile& particles);

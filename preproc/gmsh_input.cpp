@@ -25,6 +25,7 @@ namespace {
 constexpr const char* kParameterEcho = "gsph-parameter ";
 constexpr int kHex8 = 5;   // gmsh element type: 8-node hexahedron
 constexpr int kQuad4 = 3;  // gmsh element type: 4-node quadrangle
+constexpr int kLine2 = 1;  // gmsh element type: 2-node line
 
 /// One gmsh session: initialise, finalise on scope exit and restore OpenMP's thread count
 /// (toolchain.md: gmsh::initialize sets it to 1). ONELAB parameters survive gmsh::finalize in
@@ -202,34 +203,46 @@ double availableMemory() {
     return 0.0;
 }
 
-/// After the curve mesh: the hexahedra each volume will hold, from its edges' cell counts (a
-/// structured face of a×b cells has edges of a, b, a, b cells: the product of the four is
-/// (ab)²; a block of i×j×k cells has faces of ij, jk and ik cells, two each, whose product is
-/// (ijk)⁴), and the memory they need; refuses what this machine cannot hold and warns above
-/// half of it.
-void checkMeshSize(const std::string& source, std::vector<std::string>& warnings) {
-    gmsh::vectorpair volumes;
-    gmsh::model::getEntities(volumes, 3);
+/// Σ log(segments) over the boundary curves of `entity`, and how many curves it has.
+std::pair<double, std::size_t> logCurveSegments(const std::pair<int, int>& entity) {
+    gmsh::vectorpair curves;
+    gmsh::model::getBoundary({{entity.first, std::abs(entity.second)}}, curves, false, false,
+                             false);
+    double logSum = 0.0;
+    for (const auto& [dim, tag] : curves) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+        gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, std::abs(tag));
+        std::size_t segments = 0;
+        for (const auto& e : elementTags) segments += e.size();
+        logSum += std::log(static_cast<double>(std::max<std::size_t>(segments, 1)));
+    }
+    return {logSum, curves.size()};
+}
+
+/// After the curve mesh: the hexahedra each volume will hold (in 2-D: the quadrangles of each
+/// surface, each one hex once extruded), from its edges' cell counts (a structured face of a×b
+/// cells has edges of a, b, a, b cells: the product of the four is (ab)²; a block of i×j×k cells
+/// has faces of ij, jk and ik cells, two each, whose product is (ijk)⁴), and the memory they
+/// need; refuses what this machine cannot hold and warns above half of it.
+void checkMeshSize(const std::string& source, int meshDimension,
+                   std::vector<std::string>& warnings) {
+    gmsh::vectorpair blocks;
+    gmsh::model::getEntities(blocks, meshDimension);
     double hexes = 0.0;
-    for (const auto& volume : volumes) {
+    for (const auto& block : blocks) {
+        if (meshDimension == 2) {
+            const auto [logSum, curves] = logCurveSegments(block);
+            if (curves == 4) hexes += std::exp(0.5 * logSum);
+            continue;
+        }
         gmsh::vectorpair faces;
-        gmsh::model::getBoundary({volume}, faces, false, false, false);
+        gmsh::model::getBoundary({block}, faces, false, false, false);
         if (faces.size() != 6) continue;  // not a six-faced block: no estimate
         double logProduct = 0.0;          // Σ over faces of log(cells of the face)
         for (const auto& face : faces) {
-            gmsh::vectorpair edges;
-            gmsh::model::getBoundary({{face.first, std::abs(face.second)}}, edges, false, false,
-                                     false);
-            double logFace = 0.0;
-            for (const auto& [dim, tag] : edges) {
-                std::vector<int> types;
-                std::vector<std::vector<std::size_t>> elementTags, nodeTags;
-                gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, std::abs(tag));
-                std::size_t segments = 0;
-                for (const auto& e : elementTags) segments += e.size();
-                logFace += std::log(static_cast<double>(std::max<std::size_t>(segments, 1)));
-            }
-            logProduct += edges.size() == 4 ? 0.5 * logFace : 0.0;
+            const auto [logFace, curves] = logCurveSegments(face);
+            logProduct += curves == 4 ? 0.5 * logFace : 0.0;
         }
         hexes += std::exp(0.25 * logProduct);
     }
@@ -395,8 +408,48 @@ void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
     }
 }
 
+/// The quadrangles of a physical surface group (3-D: the faces of its surfaces' quads).
+void appendGroupQuads(const std::string& source, const NodeIds& ids, const std::string& label,
+                      int surface, SurfaceGroup& group) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+    gmsh::model::mesh::getElements(types, elementTags, nodeTags, 2, surface);
+    for (std::size_t t = 0; t < types.size(); ++t) {
+        if (types[t] != kQuad4) {
+            throw MeshError(source + ": physical surface " + label + " (surface " +
+                            std::to_string(surface) + ") holds " + elementName(types[t]) +
+                            "; particle sets need 4-node quadrangles (Recombine Surface)");
+        }
+        appendElements<4>(source, nodeTags[t], ids, group.quads);
+    }
+}
+
+/// The extruded segments of a physical curve group in a 2-D mesh: each 2-node line (a, b)
+/// becomes the side quad (a, b, b', a') of the slab, a' the copy of a at z = 1.
+void appendGroupSegments(const std::string& source, const NodeIds& ids, const std::string& label,
+                         int curve, Index planeNodes, SurfaceGroup& group) {
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+    gmsh::model::mesh::getElements(types, elementTags, nodeTags, 1, curve);
+    for (std::size_t t = 0; t < types.size(); ++t) {
+        if (types[t] != kLine2) {
+            throw MeshError(source + ": physical curve " + label + " (curve " +
+                            std::to_string(curve) + ") holds " + elementName(types[t]) +
+                            "; particle sets of a 2-D mesh need 2-node lines");
+        }
+        std::vector<std::array<Index, 2>> segments;
+        appendElements<2>(source, nodeTags[t], ids, segments);
+        for (const auto& [a, b] : segments)
+            group.quads.push_back({a, b, b + planeNodes, a + planeNodes});
+    }
+}
+
+/// Physical groups: in 3-D volume groups are bodies and surface groups sets; in 2-D surface
+/// groups are bodies and curve groups sets.
 void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
                 std::vector<std::string>& warnings) {
+    const bool plane = mesh.dimension == 2;
+    const auto planeNodes = static_cast<Index>(mesh.nodes.size() / 2);
     gmsh::vectorpair groups;
     gmsh::model::getPhysicalGroups(groups);
     std::sort(groups.begin(), groups.end());
@@ -407,31 +460,119 @@ void readGroups(const std::string& source, const NodeIds& ids, HexMesh& mesh,
         gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
         const std::string label =
             name.empty() ? "(tag " + std::to_string(tag) + ")" : "'" + name + "'";
-        if (dim == 3) {
+        if (dim == mesh.dimension) {
             mesh.volumeGroups.push_back({tag, name, entities});
-        } else if (dim == 2) {
+        } else if (dim == mesh.dimension - 1) {
             SurfaceGroup group{tag, name, {}};
-            for (int surface : entities) {
-                std::vector<int> types;
-                std::vector<std::vector<std::size_t>> elementTags, nodeTags;
-                gmsh::model::mesh::getElements(types, elementTags, nodeTags, 2, surface);
-                for (std::size_t t = 0; t < types.size(); ++t) {
-                    if (types[t] != kQuad4) {
-                        throw MeshError(source + ": physical surface " + label + " (surface " +
-                                        std::to_string(surface) + ") holds " +
-                                        elementName(types[t]) +
-                                        "; particle sets need 4-node quadrangles "
-                                        "(Recombine Surface)");
-                    }
-                    appendElements<4>(source, nodeTags[t], ids, group.quads);
+            for (int entity : entities) {
+                if (plane) {
+                    appendGroupSegments(source, ids, label, entity, planeNodes, group);
+                } else {
+                    appendGroupQuads(source, ids, label, entity, group);
                 }
             }
             mesh.surfaceGroups.push_back(std::move(group));
         } else {
-            warnings.push_back("physical " + std::string(dim == 1 ? "curve " : "point ") + label +
-                               " is ignored (volume groups are bodies, surface groups are sets)");
+            static const char* const kKinds[] = {"point ", "curve ", "surface ", "volume "};
+            warnings.push_back(
+                "physical " + std::string(kKinds[std::clamp(dim, 0, 3)]) + label + " is ignored (" +
+                (plane ? "in a 2-D mesh surface groups are bodies, curve groups are sets"
+                       : "volume groups are bodies, surface groups are sets") +
+                ")");
         }
     }
+}
+
+/// The number of 2-D elements of the model, and the first surface with an element that has a
+/// node no hexahedron uses (-1 if none, or if there are no hexahedra): such a surface is not
+/// part of the 3-D mesh's boundary but a 2-D mesh beside it.
+std::pair<std::size_t, long> countPlaneElements(const NodeIds& ids, const HexMesh& mesh) {
+    std::vector<char> hexNode(mesh.nodes.size(), 0);
+    for (const auto& hex : mesh.hexes)
+        for (Index n : hex) hexNode[static_cast<std::size_t>(n)] = 1;
+    gmsh::vectorpair surfaces;
+    gmsh::model::getEntities(surfaces, 2);
+    std::size_t count = 0;
+    long stray = -1;
+    for (const auto& [dim, tag] : surfaces) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+        gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
+        for (std::size_t t = 0; t < types.size(); ++t) {
+            count += elementTags[t].size();
+            if (stray >= 0 || mesh.hexes.empty()) continue;
+            for (std::size_t tagOfNode : nodeTags[t]) {
+                const Index n = ids(tagOfNode);
+                if (n >= 0 && !hexNode[static_cast<std::size_t>(n)]) {
+                    stray = tag;
+                    break;
+                }
+            }
+        }
+    }
+    return {count, stray};
+}
+
+/// A 2-D mesh: every surface must hold 4-node quadrangles only, in the plane z = 0; each
+/// quad becomes a hex of unit depth (nodes n and n + N at z = 0 and z = 1, N the plane's
+/// nodes), turned counter-clockwise first so that the hex's Jacobian is positive.
+void readSurfacesAsSlab(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
+    double extent = 0.0;
+    for (const Vec3& x : mesh.nodes) extent = std::max(extent, x.cwiseAbs().maxCoeff());
+    for (const Vec3& x : mesh.nodes) {
+        if (std::abs(x[2]) > 1e-9 * extent) {
+            char where[128];
+            std::snprintf(where, sizeof where, "(%.6g, %.6g, %.6g)", x[0], x[1], x[2]);
+            throw MeshError(source + ": a 2-D mesh must lie in the plane z = 0 (its node at " +
+                            where + " does not)");
+        }
+    }
+    const auto planeNodes = static_cast<Index>(mesh.nodes.size());
+    mesh.nodes.resize(2 * mesh.nodes.size());
+    for (Index n = 0; n < planeNodes; ++n) {
+        mesh.nodes[n][2] = 0.0;
+        mesh.nodes[n + planeNodes] = Vec3(mesh.nodes[n][0], mesh.nodes[n][1], 1.0);
+    }
+    gmsh::vectorpair surfaces;
+    gmsh::model::getEntities(surfaces, 2);
+    std::sort(surfaces.begin(), surfaces.end());
+    for (const auto& [dim, tag] : surfaces) {
+        std::vector<int> types;
+        std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+        gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
+        std::string others;
+        std::size_t quads = 0;
+        for (std::size_t t = 0; t < types.size(); ++t) {
+            if (types[t] == kQuad4) {
+                quads = elementTags[t].size();
+                continue;
+            }
+            if (!others.empty()) others += ", ";
+            others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
+        }
+        if (!others.empty()) {
+            throw MeshError(
+                source + ": surface " + std::to_string(tag) + " holds " + others +
+                (quads > 0 ? " besides " + std::to_string(quads) + " 4-node quadrangles" : "") +
+                "; gsph-preproc needs structured blocks of 4-node quadrangles in 2-D "
+                "(Transfinite Surface + Recombine Surface)");
+        }
+        if (quads == 0) continue;
+        const std::size_t at = std::find(types.begin(), types.end(), kQuad4) - types.begin();
+        std::vector<std::array<Index, 4>> plane;
+        appendElements<4>(source, nodeTags[at], ids, plane);
+        mesh.volumes.push_back(
+            {tag, static_cast<Index>(mesh.hexes.size()), static_cast<Index>(quads)});
+        for (auto q : plane) {
+            const auto& x = mesh.nodes;
+            const Vec3 d02 = x[q[2]] - x[q[0]], d13 = x[q[3]] - x[q[1]];
+            if (d02[0] * d13[1] - d02[1] * d13[0] < 0.0) std::swap(q[1], q[3]);
+            mesh.hexes.push_back({q[0], q[1], q[2], q[3], q[0] + planeNodes, q[1] + planeNodes,
+                                  q[2] + planeNodes, q[3] + planeNodes});
+        }
+        mesh.hexTags.insert(mesh.hexTags.end(), elementTags[at].begin(), elementTags[at].end());
+    }
+    mesh.dimension = 2;
 }
 
 }  // namespace
@@ -473,11 +614,16 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
     gmsh::logger::start();
     if (ext == ".geo") {
         try {
-            // Curves first: their cell counts tell the volume mesh's size before gmsh
-            // allocates it (generate(3) then keeps them).
+            // A model with surfaces but no volumes is a 2-D layout: meshed in 2-D.
+            gmsh::vectorpair volumes, surfaces;
+            gmsh::model::getEntities(volumes, 3);
+            gmsh::model::getEntities(surfaces, 2);
+            const int meshDimension = volumes.empty() && !surfaces.empty() ? 2 : 3;
+            // Curves first: their cell counts tell the mesh's size before gmsh allocates it
+            // (generate(2 or 3) then keeps them).
             gmsh::model::mesh::generate(1);
-            checkMeshSize(source, warnings);
-            gmsh::model::mesh::generate(3);
+            checkMeshSize(source, meshDimension, warnings);
+            gmsh::model::mesh::generate(meshDimension);
         } catch (const std::string& e) {
             throw MeshError(source + ": gmsh cannot mesh it: " + gmshReason(e));
         }
@@ -499,14 +645,24 @@ HexMesh readHexMesh(const std::filesystem::path& input, const MeshReadOptions& o
         tags = {};
         coords = {};
         readVolumes(source, ids, mesh);
+        const auto [planeElements, stray] = countPlaneElements(ids, mesh);
+        if (!mesh.hexes.empty() && stray >= 0) {
+            throw MeshError(source + ": the mesh mixes 2-D and 3-D elements (surface " +
+                            std::to_string(stray) +
+                            " is meshed but bounds no hexahedron); convert a 3-D mesh of "
+                            "hexahedra or a 2-D mesh of quadrangles, not both");
+        }
+        if (mesh.hexes.empty() && planeElements > 0) readSurfacesAsSlab(source, ids, mesh);
         readGroups(source, ids, mesh, warnings);
     } catch (const std::string& e) {
         throw MeshError(source + ": gmsh: " + gmshReason(e));
     }
     if (mesh.hexes.empty()) {
-        throw MeshError(source + ": the mesh has no hexahedra (no 3-D elements" +
-                        std::string(ext == ".geo" ? " after meshing: does the file define volumes?)"
-                                                  : "; was it meshed in 3-D, gmsh -3?)"));
+        throw MeshError(source +
+                        ": the mesh has no hexahedra or quadrangles (no 2-D or 3-D elements" +
+                        std::string(ext == ".geo" ? " after meshing: does the file define "
+                                                    "volumes or surfaces?)"
+                                                  : "; was it meshed, gmsh -3 or gmsh -2?)"));
     }
     return mesh;
 }

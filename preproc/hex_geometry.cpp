@@ -82,11 +82,11 @@ double minCornerJacobian(const HexCorners& x) {
     return smallest;
 }
 
-std::array<double, 2> edgeLengthRange(const HexCorners& x) {
+std::array<double, 2> edgeLengthRange(const HexCorners& x, int skipAxis) {
     double lo = INFINITY, hi = 0.0;
     for (int c = 0; c < 8; ++c) {
         for (int a = 0; a < 3; ++a) {
-            if (c >> a & 1) continue;  // each edge once, from its lower corner
+            if (c >> a & 1 || a == skipAxis) continue;  // each edge once, from its lower corner
             const double length =
                 (x[static_cast<std::size_t>(c | (1 << a))] - x[static_cast<std::size_t>(c)]).norm();
             lo = std::min(lo, length);
@@ -94,6 +94,14 @@ std::array<double, 2> edgeLengthRange(const HexCorners& x) {
         }
     }
     return {lo, hi};
+}
+
+int depthAxis(const HexCorners& x) {
+    for (int a = 0; a < 3; ++a) {
+        const Vec3 edge = x[static_cast<std::size_t>(1 << a)] - x[0];
+        if (edge[0] == 0.0 && edge[1] == 0.0 && edge[2] != 0.0) return a;
+    }
+    return -1;
 }
 
 }  // namespace gsph::preproc

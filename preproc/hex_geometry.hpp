@@ -39,7 +39,12 @@ Mat3 hexJacobian(const HexCorners& x, const Vec3& xi);
 /// Smallest det J over the 8 corners (≤ 0: the hex is inverted or degenerate).
 double minCornerJacobian(const HexCorners& x);
 
-/// Shortest and longest of the 12 edges.
-std::array<double, 2> edgeLengthRange(const HexCorners& x);
+/// Shortest and longest of the 12 edges; with `skipAxis` in 0..2, of the 8 edges along the other
+/// two corner-bit axes (a 2-D mesh's quad, without the depth of its extrusion).
+std::array<double, 2> edgeLengthRange(const HexCorners& x, int skipAxis = -1);
+
+/// The corner-bit axis along which the hex's first edge runs parallel to z (the depth of a 2-D
+/// mesh's quad extruded along z), or −1.
+int depthAxis(const HexCorners& x);
 
 }  // namespace gsph::preproc

@@ -4,6 +4,11 @@
 // (particle sets). Plain data with no gmsh types, so everything after reading is testable on
 // meshes built in code.
 //
+// A 2-D mesh (quadrangles in the plane z = 0) arrives here extruded to one layer of unit depth,
+// so that the whole hex machinery (block indexing, gluing, overset) serves it unchanged: each
+// quad becomes a hex with its nodes at z = 0 and z = 1, each gmsh surface a "volume", each
+// physical surface a body and each physical curve a set (its segments extruded into quads).
+//
 // Invariants: hexes of one volume are contiguous ([firstHex, firstHex + hexCount)); node ids
 // index `nodes`; hex node order is gmsh's (= VTK's) hex8 order; volumes are sorted by tag.
 #pragma once
@@ -45,6 +50,26 @@ struct HexMesh {
     std::vector<HexVolume> volumes;           ///< sorted by tag
     std::vector<VolumeGroup> volumeGroups;    ///< sorted by tag
     std::vector<SurfaceGroup> surfaceGroups;  ///< sorted by tag
+    /// 3, or 2 for extruded quadrangles: volumes and groups then stand for gmsh surfaces and
+    /// physical surfaces, surface groups for physical curves.
+    int dimension = 3;
 };
+
+/// What a block's gmsh entity is called in messages: "surface" in 2-D, else "volume".
+inline const char* blockEntity(const HexMesh& mesh) {
+    return mesh.dimension == 2 ? "surface" : "volume";
+}
+
+/// What a set's gmsh entity is called in messages and unnamed set names: "curve" in 2-D, else
+/// "surface".
+inline const char* setEntity(const HexMesh& mesh) {
+    return mesh.dimension == 2 ? "curve" : "surface";
+}
+
+/// The message tail for a set element that bounds no block element.
+inline const char* strayFaceFault(const HexMesh& mesh) {
+    return mesh.dimension == 2 ? "' has a segment that is not an edge of any quadrangle"
+                               : "' has a quadrilateral that is not a face of any hexahedron";
+}
 
 }  // namespace gsph::preproc

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// gsph-preproc: gmsh structured hex blocks → GSPH particle file (DESIGN §1, §2).
+// gsph-preproc: gmsh structured hex (or 2-D quad) blocks → GSPH particle file (DESIGN §1, §2).
 //
 // Usage:
 //   gsph-preproc INPUT -o PARTICLES.h5 [--set NAME=VALUE]... [--priority VOLUME=N]...
@@ -11,6 +11,7 @@
 //   gmsh -3 geometries/notched_plate.geo -o plate.msh && gsph-preproc plate.msh -o plate.h5
 //   gsph-preproc geometries/two_blocks.geo -o blocks.h5 --set overlap=2 --priority 1=1
 //   gsph-preproc geometries/taylor_bar.geo -o uniform.h5 --lattice 0.475e-3
+//   gsph-preproc geometries/taylor_bar_axisymmetric.geo -o taylor_rz.h5
 //
 // Description:
 //   INPUT is a .geo (meshed in 3-D in-process by gmsh) or a .msh. Every gmsh volume must be a
@@ -22,10 +23,12 @@
 //   2·K·Δθ of another space's particles become transient there (--overset-kappa K, default
 //   1.5). --lattice H instead fills each body with the uniform Cartesian lattice of standard SPH
 //   (spacing ≈ H, sites inside the meshed region: uniform_lattice.hpp), for comparisons. The
-//   file format is in docs/formats.md. On error: one line on stderr naming the file and
-//   the fault, exit status 1 (4 if the output could not be written: disk full, quota), and
-//   no output file (an existing one is kept). gmsh runs in a child process, so a crash inside
-//   gmsh is such an error too.
+//   file format is in docs/formats.md. A 2-D mesh (a .geo with surfaces and no volumes, meshed
+//   in 2-D; a .msh of quadrangles) of structured quad blocks in the plane z = 0 gives a 2-D
+//   file: physical surfaces are its bodies, physical curves its sets. On error: one line on stderr
+//   naming the file and the fault, exit status 1 (4 if the output could not be written: disk full,
+//   quota), and no output file (an existing one is kept). gmsh runs in a child process, so a crash
+//   inside gmsh is such an error too.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cctype>
@@ -101,11 +104,14 @@ gsph::preproc::PriorityRule parsePriority(const std::string& text) {
 int main(int argc, char** argv) {
     // A file-size limit (ulimit -f) is a failed write with its own message, not a kill.
     std::signal(SIGXFSZ, SIG_IGN);
-    CLI::App app{"gsph-preproc: gmsh structured hex blocks -> GSPH particle file"};
+    CLI::App app{"gsph-preproc: gmsh structured hex (or 2-D quad) blocks -> GSPH particle file"};
     std::string input, output;
     std::vector<std::string> parameters;
     bool quiet = false;
-    app.add_option("input", input, "a .geo (meshed in 3-D in-process) or a .msh file")->required();
+    app.add_option("input", input,
+                   "a .geo (meshed in-process: in 3-D, or in 2-D if it has surfaces but no "
+                   "volumes) or a .msh file")
+        ->required();
     app.add_option("-o,--output", output, "the particle file to write (HDF5)")->required();
     app.add_option("--set", parameters,
                    "NAME=VALUE: set a .geo parameter before parsing (overrides DefineConstant), "

@@ -11,6 +11,7 @@ namespace {
 
 void writeMesh(ByteWriter& w, const HexMesh& m, const std::vector<std::string>& warnings) {
     w.text(m.source);
+    w.value(m.dimension);
     w.array(m.nodes);
     w.array(m.hexes);
     w.array(m.hexTags);
@@ -34,6 +35,7 @@ void writeMesh(ByteWriter& w, const HexMesh& m, const std::vector<std::string>& 
 HexMesh readMesh(ByteReader& r, std::vector<std::string>& warnings) {
     HexMesh m;
     m.source = r.text();
+    m.dimension = r.value<int>();
     m.nodes = r.array<Vec3>();
     m.hexes = r.array<std::array<Index, 8>>();
     m.hexTags = r.array<std::size_t>();

@@ -38,9 +38,11 @@ void printSpaces(std::ostream& out, const std::string& input, const std::string&
     }
     out << "gsph-preproc " << kVersion << ": " << input
         << (parameters.empty() ? "" : " (" + parameters + ")") << " -> " << output << "\n";
-    out << format("  particles  %ld in %zu space%s, %zu bod%s, from %zu hexahedra\n",
+    const bool plane = pf.dimension == 2;
+    out << format("  particles  %ld in %zu space%s, %zu bod%s, from %zu %s\n",
                   static_cast<long>(pf.size()), spaces, spaces == 1 ? "" : "s", pf.bodies.size(),
-                  pf.bodies.size() == 1 ? "y" : "ies", stats.hexes);
+                  pf.bodies.size() == 1 ? "y" : "ies", stats.hexes,
+                  plane ? "quadrangles (2-D)" : "hexahedra");
     for (std::size_t s = 0; s < spaces; ++s) {
         const LatticeSpace& sp = pf.spaces[s];
         std::string periodic;
@@ -49,9 +51,9 @@ void printSpaces(std::ostream& out, const std::string& input, const std::string&
         }
         const std::string cells = format("%dx%dx%d", sp.cells[0], sp.cells[1], sp.cells[2]);
         out << format(
-            "  space %-3zu body %-3d cells %-16s periodic %-4s particles %-9ld gmsh volumes %s\n",
-            s, bodyOfSpace[s], cells.c_str(), periodic.empty() ? "-" : periodic.c_str(),
-            perSpace[s], join(stats.spaceVolumes[s]).c_str());
+            "  space %-3zu body %-3d cells %-16s periodic %-4s particles %-9ld gmsh %s %s\n", s,
+            bodyOfSpace[s], cells.c_str(), periodic.empty() ? "-" : periodic.c_str(), perSpace[s],
+            plane ? "surfaces" : "volumes", join(stats.spaceVolumes[s]).c_str());
     }
     out.flush();
 }
@@ -69,13 +71,23 @@ void printSummary(std::ostream& out, const ParticleFile& pf, const ConversionSta
         const std::string name = body.name.empty()
                                      ? (body.sourceTag < 0 ? "(whole mesh)" : "(unnamed)")
                                      : "'" + body.name + "'";
-        out << format("  body %-3zu %-20s particles %-9ld volume %.6e m^3\n", b, name.c_str(),
-                      perBody[b], bodyVolume[b]);
+        // A 2-D file's volumes are areas (per metre of depth).
+        out << format("  body %-3zu %-20s particles %-9ld %s %.6e %s\n", b, name.c_str(),
+                      perBody[b], pf.dimension == 2 ? "area" : "volume", bodyVolume[b],
+                      pf.dimension == 2 ? "m^2" : "m^3");
     }
-    out << format("  spacing    hex edge length from %.4e m to %.4e m\n", stats.minEdge,
-                  stats.maxEdge);
+    out << format("  spacing    %s edge length from %.4e m to %.4e m\n",
+                  pf.dimension == 2 ? "quad" : "hex", stats.minEdge, stats.maxEdge);
     for (std::size_t b = 0; b < stats.lattice.size(); ++b) {
         const ConversionStats::Lattice& l = stats.lattice[b];
+        if (pf.dimension == 2) {
+            out << format(
+                "  lattice    body %-3zu uniform Cartesian, spacing %.4e x %.4e m, box %dx%d "
+                "cells; area %.6e m^2 = %.4f of the mesh's\n",
+                b, l.spacing[0], l.spacing[1], l.cells[0], l.cells[1], bodyVolume[b],
+                bodyVolume[b] / l.meshVolume);
+            continue;
+        }
         out << format(
             "  lattice    body %-3zu uniform Cartesian, spacing %.4e x %.4e x %.4e m, box %dx%dx%d "
             "cells; volume %.6e m^3 = %.4f of the mesh's\n",
@@ -94,6 +106,13 @@ void printSummary(std::ostream& out, const ParticleFile& pf, const ConversionSta
     }
     for (std::size_t s = 0; s < stats.metric.size(); ++s) {
         const MetricReport& m = stats.metric[s];
+        if (pf.dimension == 2) {  // the slab's unit depth says nothing of the 2-D metric
+            out << format(
+                "  metric     space %-3zu worst cond(dX/dtheta) in the plane %.3f, det at cell "
+                "corners >= %.3f of centre\n",
+                s, m.inPlaneCondition, m.cornerRatio);
+            continue;
+        }
         const std::string plane = m.oneLayerAxis < 0
                                       ? ""
                                       : format(" (in-plane %.3f: one cell along %c)",

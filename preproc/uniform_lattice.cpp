@@ -83,8 +83,8 @@ void buildLatticeSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
         for (const auto& quad : g.quads) {
             std::array<Index, 2> found{};
             if (adjacency.hexesWithFace(quad, -1, found) == 0) {
-                throw MeshError(mesh.source + ": physical surface '" + name +
-                                "' has a quadrilateral that is not a face of any hexahedron");
+                throw MeshError(mesh.source + ": physical " + setEntity(mesh) + " '" + name +
+                                strayFaceFault(mesh));
             }
             const Index hex = found[0];
             const BodyLattice& lat = lattices[static_cast<std::size_t>(bodyOfHex[hex])];
@@ -96,15 +96,20 @@ void buildLatticeSets(const HexMesh& mesh, const NodeHexAdjacency& adjacency,
             const Vec3& p1 = mesh.nodes[quad[1]];
             const Vec3& p2 = mesh.nodes[quad[2]];
             const Vec3& p3 = mesh.nodes[quad[3]];
-            const double hMin = lat.h.minCoeff();
-            const double size =
-                std::max({(p1 - p0).norm(), (p2 - p1).norm(), (p3 - p2).norm(), (p0 - p3).norm()});
+            // A 2-D mesh's set quads are extruded segments (a, b, b', a'): sampled along the
+            // segment only, since the slab is one cell deep.
+            const bool plane = mesh.dimension == 2;
+            const double hMin = plane ? std::min(lat.h[0], lat.h[1]) : lat.h.minCoeff();
+            const double size = plane ? (p1 - p0).norm()
+                                      : std::max({(p1 - p0).norm(), (p2 - p1).norm(),
+                                                  (p3 - p2).norm(), (p0 - p3).norm()});
             const int samples = std::max(1, static_cast<int>(std::ceil(2.0 * size / hMin)));
+            const int samplesAcross = plane ? 1 : samples;
             // Each sample point carries its share of the face's area to the particle it finds.
-            const Vec3 share = outwardQuadArea(p0, p1, p2, p3, inside) / (samples * samples);
-            for (int it = 0; it < samples; ++it) {
+            const Vec3 share = outwardQuadArea(p0, p1, p2, p3, inside) / (samples * samplesAcross);
+            for (int it = 0; it < samplesAcross; ++it) {
                 for (int is = 0; is < samples; ++is) {
-                    const double s = (is + 0.5) / samples, t = (it + 0.5) / samples;
+                    const double s = (is + 0.5) / samples, t = (it + 0.5) / samplesAcross;
                     const Vec3 onFace =
                         (1 - s) * (1 - t) * p0 + s * (1 - t) * p1 + s * t * p2 + (1 - s) * t * p3;
                     // Nudged into the face's hex: a face on a cell boundary picks the body side.
@@ -152,7 +157,7 @@ void fillUniformLattice(const HexMesh& mesh, const std::vector<BlockLattice>& bl
         HexCorners x;
         for (int c = 0; c < 8; ++c) x[c] = mesh.nodes[mesh.hexes[h][kGmshCorner[c]]];
         stats.lattice[static_cast<std::size_t>(bodyOfHex[h])].meshVolume += hexVolume(x);
-        const auto edges = edgeLengthRange(x);
+        const auto edges = edgeLengthRange(x, mesh.dimension == 2 ? depthAxis(x) : -1);
         stats.minEdge = std::min(stats.minEdge, edges[0]);
         stats.maxEdge = std::max(stats.maxEdge, edges[1]);
     }
@@ -163,7 +168,10 @@ void fillUniformLattice(const HexMesh& mesh, const std::vector<BlockLattice>& bl
         const Vec3 extent = box[b].sizes();
         double sites = 1.0;
         for (int d = 0; d < 3; ++d) {
-            lat.cells[d] = static_cast<int>(std::max(1.0, std::round(extent[d] / spacing)));
+            // A 2-D mesh's unit-depth slab keeps one cell along z.
+            const bool slabDepth = d == 2 && mesh.dimension == 2;
+            lat.cells[d] =
+                slabDepth ? 1 : static_cast<int>(std::max(1.0, std::round(extent[d] / spacing)));
             lat.h[d] = extent[d] > 0.0 ? extent[d] / lat.cells[d] : spacing;
             sites *= lat.cells[d];
         }
@@ -233,6 +241,10 @@ void fillUniformLattice(const HexMesh& mesh, const std::vector<BlockLattice>& bl
         const Vec3& h = stats.lattice[s].spacing;
         stats.metric[s].condition = h.maxCoeff() / h.minCoeff();
         stats.metric[s].inPlaneCondition = stats.metric[s].condition;
+        if (mesh.dimension == 2) {  // the slab's unit depth is no spacing
+            stats.metric[s].oneLayerAxis = 2;
+            stats.metric[s].inPlaneCondition = h.head<2>().maxCoeff() / h.head<2>().minCoeff();
+        }
     }
     buildLatticeSets(mesh, adjacency, bodyOfHex, lattices, out);
 }

@@ -26,8 +26,9 @@ inline void expectLatticeLayout(const ParticleFile& f) {
                     ASSERT_EQ(f.space[a], static_cast<Index>(s));
                     ASSERT_EQ(f.body[a], body) << "a space spans two bodies";
                     ASSERT_EQ(f.latticeIndex[a], (std::array<Index, 3>{i, j, k}));
-                    // Integers + ½ times Δθ = 1 are exact in floating point.
-                    ASSERT_EQ(f.theta[a], Vec3(i + 0.5, j + 0.5, k + 0.5));
+                    // Integers + ½ times Δθ = 1 are exact in floating point; a 2-D file has
+                    // θ_z = 0.
+                    ASSERT_EQ(f.theta[a], Vec3(i + 0.5, j + 0.5, f.dimension == 2 ? 0.0 : k + 0.5));
                 }
             }
         }

@@ -53,6 +53,25 @@ TEST(PreprocCli, ConvertsASampleWithSummaryAndProvenance) {
     EXPECT_EQ(dir.entries(), 1);
 }
 
+TEST(PreprocCli, ConvertsA2dQuadMeshIntoA2dFile) {
+    test::TempDir dir;
+    const std::string input = source("geometries/taylor_bar_axisymmetric.geo");
+    const auto output = dir / "taylor_rz.h5";
+    const ProcessResult r = preproc(quote(input) + " -o " + quote(output.string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err, "") << "the samples convert without warnings";
+    for (const char* expected :
+         {"particles  424 in 1 space, 1 body, from 424 quadrangles (2-D)", "cells 8x53x1",
+          "gmsh surfaces 1", "'bar'", "area 9.652000e-05 m^2", "'axis' 53", "'impact_face' 8",
+          "'side' 53", "'top' 8", "spacing    quad edge length from 4.7500e-04 m to 4.7925e-04 m",
+          "metric     space 0   worst cond(dX/dtheta) in the plane 1.009"}) {
+        EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
+    }
+    const ParticleFile f = readParticleFile(output);
+    EXPECT_EQ(f.dimension, 2);
+    EXPECT_EQ(f.size(), 424);
+}
+
 TEST(PreprocCli, ParametersAndReplacingAnOutput) {
     test::TempDir dir;
     const auto output = dir / "bar.h5";
@@ -157,6 +176,11 @@ TEST(PreprocCli, BadInputsFailCleanly) {
         {"ungrouped_volume.geo", "no physical volume group"},
         {"bad_transfinite.geo", "cannot mesh it"},
         {"cylinder_single_space.geo", "collapses onto the line"},
+        {"triangles_2d.geo",
+         "3-node triangles; gsph-preproc needs structured blocks of 4-node "
+         "quadrangles in 2-D"},
+        {"unstructured_quads_2d.geo", "surface 1 is not a structured quad block"},
+        {"mixed_2d_3d.geo", "mixes 2-D and 3-D elements"},
     };
     for (const Case& c : cases) {
         const std::string path = source("tests/data/") + c.file;

@@ -1,0 +1,49 @@
+// Taylor bar, axisymmetric: the half-plane (r, z) cross-section of the copper rod of
+// taylor_bar.geo as one structured block of quadrangles, for a 2-D axisymmetric run.
+//
+//   gmsh -2 taylor_bar_axisymmetric.geo                        -> taylor_bar_axisymmetric.msh
+//   gsph-preproc taylor_bar_axisymmetric.geo -o taylor_rz.h5   (meshes in 2-D in-process)
+//   gsph-preproc taylor_bar_axisymmetric.geo -o taylor_rz.h5 --set refine=2
+//
+// The section is the rectangle 0 <= x <= R, 0 <= y <= L: x is the radius r, y runs along the
+// bar's axis, the impact face is y = 0. Length 25.4 mm, diameter 7.6 mm (taylor_bar.geo). The
+// cells are uniform and roughly square: nr * refine across the radius, as many along the axis
+// as keep them square. A 2-D particle file's volumes are per metre of depth (the cells' areas):
+// the axisymmetric run turns them into rings (docs/formats.md).
+// Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
+// `gsph-preproc --set NAME=VALUE`. Units: SI (m).
+// Body: Physical Surface "bar". Sets (physical curves): "impact_face" (y = 0), "axis" (x = 0),
+// "side" (x = R), "top" (y = L).
+
+DefineConstant[
+  R = {3.8e-3, Name "Parameters/R"},      // radius [m]
+  L = {25.4e-3, Name "Parameters/L"},     // length [m]
+  nr = {8, Name "Parameters/nr"},         // cells across the radius
+  refine = {1, Name "Parameters/refine"}  // multiplies every cell count (convergence studies)
+];
+// Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
+// or a crash inside gmsh.
+If (R <= 0 || L <= 0 || nr < 1 || refine < 1)
+  Error("taylor_bar_axisymmetric.geo: needs R, L > 0; nr, refine ≥ 1 (got R = %g, L = %g, nr = %g, refine = %g)", R, L, nr, refine);
+EndIf
+cells_r = Round(nr * refine);
+cells_z = Round(cells_r * L / R);  // square cells: the same spacing along the axis
+
+Point(1) = {0, 0, 0};  Point(2) = {R, 0, 0};  Point(3) = {R, L, 0};  Point(4) = {0, L, 0};
+Line(1) = {1, 2};  // y = 0: the impact face
+Line(2) = {2, 3};  // x = R: the side
+Line(3) = {4, 3};  // y = L: the top
+Line(4) = {1, 4};  // x = 0: the axis
+Curve Loop(1) = {1, 2, -3, -4};
+Plane Surface(1) = {1};
+
+Transfinite Curve{1, 3} = cells_r + 1;
+Transfinite Curve{2, 4} = cells_z + 1;
+Transfinite Surface{1};
+Recombine Surface{1};
+
+Physical Surface("bar") = {1};
+Physical Curve("impact_face") = {1};
+Physical Curve("axis") = {4};
+Physical Curve("side") = {2};
+Physical Curve("top") = {3};
