@@ -12,8 +12,8 @@
 // the axisymmetric run turns them into rings (docs/formats.md).
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m).
-// Body: Physical Surface "bar". Sets (physical curves): "impact_face" (y = 0), "axis" (x = 0),
-// "side" (x = R), "top" (y = L).
+// Body: Physical Surface "rod". Sets (physical curves), named as taylor_bar.geo's: "impact"
+// (y = 0), "lateral" (x = R), "free_end" (y = L), and "axis" (x = 0).
 
 DefineConstant[
   R = {3.8e-3, Name "Parameters/R"},      // radius [m]
@@ -42,8 +42,8 @@ Transfinite Curve{2, 4} = cells_z + 1;
 Transfinite Surface{1};
 Recombine Surface{1};
 
-Physical Surface("bar") = {1};
-Physical Curve("impact_face") = {1};
+Physical Surface("rod") = {1};
+Physical Curve("impact") = {1};
 Physical Curve("axis") = {4};
-Physical Curve("side") = {2};
-Physical Curve("top") = {3};
+Physical Curve("lateral") = {2};
+Physical Curve("free_end") = {3};

@@ -62,8 +62,8 @@ TEST(PreprocCli, ConvertsA2dQuadMeshIntoA2dFile) {
     EXPECT_EQ(r.err, "") << "the samples convert without warnings";
     for (const char* expected :
          {"particles  424 in 1 space, 1 body, from 424 quadrangles (2-D)", "cells 8x53x1",
-          "gmsh surfaces 1", "'bar'", "area 9.652000e-05 m^2", "'axis' 53", "'impact_face' 8",
-          "'side' 53", "'top' 8", "spacing    quad edge length from 4.7500e-04 m to 4.7925e-04 m",
+          "gmsh surfaces 1", "'rod'", "area 9.652000e-05 m^2", "'axis' 53", "'impact' 8",
+          "'lateral' 53", "'free_end' 8", "spacing    quad edge length from 4.7500e-04 m to 4.7925e-04 m",
           "metric     space 0   worst cond(dX/dtheta) in the plane 1.009"}) {
         EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
     }

@@ -126,22 +126,22 @@ TEST(Preproc2d, TaylorBarAxisymmetricSection) {
     EXPECT_EQ(f.spaces[0].cells, (Int3{8, 53, 1}));
     EXPECT_EQ(f.size(), 8 * 53);
     ASSERT_EQ(f.bodies.size(), 1u);
-    EXPECT_EQ(f.bodies[0].name, "bar");
+    EXPECT_EQ(f.bodies[0].name, "rod");
     EXPECT_NEAR(totalVolume(f), R * L, 1e-12 * R * L);
     for (Index a = 0; a < f.size(); ++a) EXPECT_GT(f.X[a][0], 0.0);  // r > 0 everywhere
     // The straight edges' sets: one cell row each, Σ area = length × outward normal.
     const std::map<std::string, std::pair<std::size_t, Vec3>> edges = {
-        {"impact_face", {8, Vec3(0, -R, 0)}},
-        {"top", {8, Vec3(0, R, 0)}},
+        {"impact", {8, Vec3(0, -R, 0)}},
+        {"free_end", {8, Vec3(0, R, 0)}},
         {"axis", {53, Vec3(-L, 0, 0)}},
-        {"side", {53, Vec3(L, 0, 0)}}};
+        {"lateral", {53, Vec3(L, 0, 0)}}};
     for (const auto& [name, expected] : edges) {
         ASSERT_EQ(f.sets.count(name), 1u) << name;
         EXPECT_EQ(f.sets.at(name).size(), expected.first) << name;
         EXPECT_LT((totalArea(f, name) - expected.second).norm(), 1e-12 * expected.second.norm())
             << name;
     }
-    for (Index a : f.sets.at("impact_face")) EXPECT_EQ(f.latticeIndex[a][1], 0);
+    for (Index a : f.sets.at("impact")) EXPECT_EQ(f.latticeIndex[a][1], 0);
     for (Index a : f.sets.at("axis")) EXPECT_EQ(f.latticeIndex[a][0], 0);
     const double error = restDeformationError(f);
     std::printf(
