@@ -308,6 +308,11 @@ int main(int argc, char** argv) {
                                                "solid, see above); pass --particles FILE");
                     gsph::post::requireRevolvableSection(*solid.solid, revolve,
                                                          solid.path.string());
+                    if (!snap.axisymmetric)
+                        throw gsph::InputError(
+                            p.string() +
+                            ": --revolve sweeps an axisymmetric run's section, and "
+                            "this run is not axisymmetric ([run] dimension)");
                 }
             }
             // A planar run has no crack surfaces to draw: say so once, write no empty ones.

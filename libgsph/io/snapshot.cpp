@@ -149,6 +149,7 @@ Snapshot snapshotOf(const Reference& ref, const State& state) {
         if (field.isSavedIn(kSnapshot)) to = from;
     });
     s.X = ref.X;
+    s.axisymmetric = ref.dim.axisymmetric;
     s.volume = ref.quadVolume;
     s.body = ref.body;
     s.space = ref.space;
@@ -170,6 +171,8 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         const double step = static_cast<double>(s.state.step);
         f.write("/time", &time, {1});
         f.write("/step", &step, {1});
+        const std::int8_t axisymmetric = s.axisymmetric ? 1 : 0;
+        f.write("/axisymmetric", &axisymmetric, {1});
         s.forEachField([&](const Field& field, const auto& array) {
             const std::string name = std::string("/particles/") + field.name;
             writeField(f, name, array);
@@ -190,6 +193,8 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     std::vector<std::size_t> dims;
     s.state.time = f.read<double>("/time", dims).at(0);
     s.state.step = static_cast<long>(f.read<double>("/step", dims).at(0));
+    if (f.exists("/axisymmetric"))  // since 0.6
+        s.axisymmetric = f.read<std::int8_t>("/axisymmetric", dims).at(0) != 0;
     // The particle count from the first field (X, N×3); every other field must agree.
     f.read<double>("/particles/X", dims);
     if (dims.size() != 2 || dims[1] != 3)
@@ -229,6 +234,7 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
             const Snapshot s = readSnapshot(path);
             w.value(s.state.time);
             w.value(s.state.step);
+            w.value<std::uint8_t>(s.axisymmetric ? 1 : 0);
             s.forEachField([&](const Field&, const auto& array) { w.array(array); });
             w.array(s.brokenBonds);
             writeProvenance(w, s.provenance);
@@ -242,6 +248,7 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
     Snapshot s;
     s.state.time = r.value<double>();
     s.state.step = r.value<long>();
+    s.axisymmetric = r.value<std::uint8_t>() != 0;
     s.forEachField([&](const Field&, auto& array) {
         array = r.array<typename std::decay_t<decltype(array)>::value_type>();
     });

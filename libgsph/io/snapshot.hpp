@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Snapshot files of a run (DESIGN §1): the state at one time, for gsph-post and the user.
-// HDF5, format "gsph-snapshot" 0.5 (layout in docs/formats.md). Written atomically
+// HDF5, format "gsph-snapshot" 0.6 (layout in docs/formats.md). Written atomically
 // (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)
+//   /axisymmetric                (1 int8: 1 for an axisymmetric run's section; since 0.6)
 //   /particles/NAME              one dataset per field of Snapshot::forEachField, with its
 //                                `units` attribute: N×3 (vectors), N×9 row-major (tensors), N
 //   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
@@ -27,8 +28,9 @@ namespace gsph {
 
 inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
-/// 0.5: internal_energy, plastic_work, damage_driver (older files read them as zeros).
-inline constexpr int kSnapshotFormatMinor = 5;
+/// 0.5: internal_energy, plastic_work, damage_driver (older files read them as zeros);
+/// 0.6: /axisymmetric (older files: 0).
+inline constexpr int kSnapshotFormatMinor = 6;
 
 /// What a snapshot holds, read back as plain arrays.
 struct Snapshot {
@@ -46,6 +48,9 @@ struct Snapshot {
     std::vector<double> bondDamage;
     std::vector<std::array<Index, 2>> brokenBonds;  ///< (a, b), a < b
     Provenance provenance;
+    /// The run was axisymmetric (a 2-D section whose particles are rings; its volumes are the
+    /// rings' volumes).
+    bool axisymmetric = false;
     Index size() const { return static_cast<Index>(X.size()); }
 
     /// Calls visit(field, array) for every per-particle array, in the files' order, with its

@@ -74,8 +74,9 @@ ParticleFile rectangle(int dimension, int nx = kCells[0], int ny = kCells[1], do
 // hoop: an axisymmetric run's r/R, which must not change the section), v = (2, −1, 0) and a
 // stress with a hoop component.
 void writeStretched(const fs::path& path, const ParticleFile& f, const Mat3& A, const Vec3& c,
-                    double time) {
+                    double time, bool axisymmetric) {
     Reference ref;
+    ref.dim = Dimension{f.dimension, axisymmetric};
     ref.X = f.X;
     ref.quadVolume = f.volume;
     ref.body = f.body;
@@ -128,13 +129,15 @@ Vec3 pointOf(const Grid& g, vtkIdType i) {
 const Mat3 kA = (Mat3() << 1.2, 0.0, 0.0, 0.3, 0.9, 0.0, 0.0, 0.0, 1.3).finished();
 const Vec3 kShift(0.0, 0.02, 0.0);  // along the axis: an axisymmetric motion
 
-fs::path makeRun(const TempDir& dir, int dimension) {
+fs::path makeRun(const TempDir& dir, int dimension, bool axisymmetric = true) {
     const fs::path run = dir / ("run" + std::to_string(dimension) + "d");
     fs::create_directories(run);
     const ParticleFile f = rectangle(dimension);
     writeParticleFile(run / "particles.h5", f);
-    writeStretched(run / "snapshot_000000.h5", f, Mat3::Identity(), Vec3::Zero(), 0.0);
-    writeStretched(run / "snapshot_000001.h5", f, kA, kShift, 1e-5);
+    axisymmetric = axisymmetric && dimension == 2;
+    writeStretched(run / "snapshot_000000.h5", f, Mat3::Identity(), Vec3::Zero(), 0.0,
+                   axisymmetric);
+    writeStretched(run / "snapshot_000001.h5", f, kA, kShift, 1e-5, axisymmetric);
     return run;
 }
 
@@ -438,6 +441,21 @@ TEST(RevolvedSolid, ThreeDimensionalFileIsRefused) {
     r = runCommand(std::string(GSPH_POST_EXE) + " " + quote(run.string()) + " --no-pictures");
     EXPECT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("12 hexahedra"), std::string::npos) << r.out;
+}
+
+// --revolve on a plane-strain run's snapshots (a 2-D file, the snapshot not marked
+// axisymmetric): one line naming the snapshot, exit code 1, nothing revolved.
+TEST(RevolvedSolid, PlaneStrainRunIsRefused) {
+    TempDir dir;
+    const fs::path run = makeRun(dir, 2, false);
+    const auto r = runCommand(std::string(GSPH_POST_EXE) + " " + quote(run.string()) +
+                              " --no-pictures --revolve 8");
+    EXPECT_EQ(r.status, 1);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("snapshot_000000.h5: --revolve sweeps an axisymmetric run's section"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(run / "post/solid_revolved.pvd"));
 }
 
 }  // namespace
