@@ -78,18 +78,40 @@ def measure(particles_h5, snapshot_h5, layout=None):
         temperature = f["particles/temperature"][...] if "particles/temperature" in f else None
     deformed = np.einsum("aij,adj->adi", F, edges)  # F e_d, (N, axis d, component i)
     if dimension == 2:
-        return measure_axisymmetric(x, deformed, impact, time, strain, temperature)
-    reach_z = np.abs(deformed[:, :, 2]).sum(axis=1)
-    top = np.max(x[:, 2] + reach_z)
-    bottom = np.min(x[:, 2] - reach_z)
-    r = np.hypot(x[:, 0], x[:, 1])
-    rhat = np.zeros_like(x)
-    nz = r > 0
-    rhat[nz, 0] = x[nz, 0] / r[nz]
-    rhat[nz, 1] = x[nz, 1] / r[nz]
-    reach_r = r + np.abs(np.einsum("adi,ai->ad", deformed, rhat)).sum(axis=1)
+        axis, r = 1, x[:, 0]
+        reach_r = r + np.abs(deformed[:, :, 0]).sum(axis=1)
+        area = ring_area(x, deformed, impact)
+    else:
+        axis, r = 2, np.hypot(x[:, 0], x[:, 1])
+        rhat = np.zeros_like(x)
+        nz = r > 0
+        rhat[nz, 0] = x[nz, 0] / r[nz]
+        rhat[nz, 1] = x[nz, 1] / r[nz]
+        reach_r = r + np.abs(np.einsum("adi,ai->ad", deformed, rhat)).sum(axis=1)
+        area = face_area(edges, F, impact)
+    reach_z = np.abs(deformed[:, :, axis]).sum(axis=1)
+    top = np.max(x[:, axis] + reach_z)
+    bottom = np.min(x[:, axis] - reach_z)
     widest = int(np.argmax(reach_r))
-    # The impact face: per particle, the axis most aligned with z is the one across the face.
+    centre = impact[np.argmin(r[impact])]
+    return {
+        "time": time,
+        "length": top - bottom,
+        "footprint": 2.0 * np.sqrt(area / np.pi),
+        "widest": 2.0 * reach_r[widest],
+        "at_z": x[widest, axis] - bottom,
+        "bottom": bottom,
+        "z": x[:, axis] - bottom,
+        "reach_z": reach_z,
+        "reach_r": reach_r,
+        "centre_strain": strain[centre] if strain is not None else np.nan,
+        "centre_temperature": temperature[centre] if temperature is not None else np.nan,
+    }
+
+
+def face_area(edges, F, impact):
+    """3-D: Σ |A_z| of the impact face's cells' bottom faces, J F^-T A0 (Nanson)."""
+    # Per particle, the axis most aligned with z is the one across the face.
     e = edges[impact]
     across = np.argmax(np.abs(e[:, :, 2]), axis=1)
     first = np.where(across == 0, 1, 0)
@@ -98,50 +120,16 @@ def measure(particles_h5, snapshot_h5, layout=None):
     A0 = 4.0 * np.cross(e[rows, first], e[rows, second])
     Fi = F[impact]
     cofactor = np.linalg.det(Fi)[:, None, None] * np.linalg.inv(Fi).transpose(0, 2, 1)
-    area = np.abs(np.einsum("aij,aj->ai", cofactor, A0)[:, 2]).sum()
-    centre = impact[np.argmin(r[impact])]
-    return {
-        "time": time,
-        "length": top - bottom,
-        "footprint": 2.0 * np.sqrt(area / np.pi),
-        "widest": 2.0 * reach_r[widest],
-        "at_z": x[widest, 2] - bottom,
-        "bottom": bottom,
-        "z": x[:, 2] - bottom,
-        "reach_z": reach_z,
-        "reach_r": reach_r,
-        "centre_strain": strain[centre] if strain is not None else np.nan,
-        "centre_temperature": temperature[centre] if temperature is not None else np.nan,
-    }
+    return np.abs(np.einsum("aij,aj->ai", cofactor, A0)[:, 2]).sum()
 
 
-def measure_axisymmetric(x, deformed, impact, time, strain, temperature):
-    """The same measures on an axisymmetric section (x = r, y the axis): each cell is a ring;
-    the footprint is the disc of the rings the impact face's cells sweep, Σ 2π r |radial width|
-    of their faces on y = 0."""
-    reach_y = np.abs(deformed[:, :, 1]).sum(axis=1)
-    top = np.max(x[:, 1] + reach_y)
-    bottom = np.min(x[:, 1] - reach_y)
-    reach_r = x[:, 0] + np.abs(deformed[:, :, 0]).sum(axis=1)
-    widest = int(np.argmax(reach_r))
+def ring_area(x, deformed, impact):
+    """Axisymmetric section (x = r, y the axis): the rings the impact face's cells sweep,
+    Σ 2π r |radial width| of their faces on y = 0."""
     e = deformed[impact]
     along = np.argmax(np.abs(e[:, :2, 0]), axis=1)  # the in-plane edge that runs radially
     width = 2.0 * np.abs(e[np.arange(len(impact)), along, 0])
-    area = (2.0 * np.pi * x[impact, 0] * width).sum()
-    centre = impact[np.argmin(x[impact, 0])]
-    return {
-        "time": time,
-        "length": top - bottom,
-        "footprint": 2.0 * np.sqrt(area / np.pi),
-        "widest": 2.0 * reach_r[widest],
-        "at_z": x[widest, 1] - bottom,
-        "bottom": bottom,
-        "z": x[:, 1] - bottom,
-        "reach_z": reach_y,
-        "reach_r": reach_r,
-        "centre_strain": strain[centre] if strain is not None else np.nan,
-        "centre_temperature": temperature[centre] if temperature is not None else np.nan,
-    }
+    return (2.0 * np.pi * x[impact, 0] * width).sum()
 
 
 def outline(m, points=200):

@@ -5,10 +5,12 @@
 
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <vector>
 
 #include "materials/material.hpp"
 #include "neighbors/theta_search.hpp"
+#include "simulation.hpp"
 #include "spaces/analytic_maps.hpp"
 #include "spaces/metric.hpp"
 
@@ -43,6 +45,21 @@ inline std::vector<Index> interiorParticles(const Reference& ref, int margin) {
 /// Cells of one kernel support: ⌈2κ⌉.
 inline int supportCells(const Reference& ref) {
     return static_cast<int>(std::ceil(2.0 * ref.kappa));
+}
+
+/// The force on every particle at the start of a run, f = m a, under the state set on `sim`.
+inline std::vector<Vec3> forcesUnder(Simulation& sim) {
+    sim.start();
+    std::vector<Vec3> f(sim.state().acceleration.size());
+    for (std::size_t a = 0; a < f.size(); ++a)
+        f[a] = sim.reference().mass[a] * sim.state().acceleration[a];
+    return f;
+}
+
+/// The two arrays hold the same bytes.
+template <class T>
+bool bitIdentical(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
 }  // namespace gsph::testing

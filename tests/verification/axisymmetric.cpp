@@ -93,15 +93,6 @@ TEST(Axisymmetric, AffineVelocityGivesExactFThroughTheStep) {
     EXPECT_LE(worst, 1e-12);
 }
 
-// Internal force f = m a at the start, under a stress set on every particle.
-std::vector<Vec3> forcesUnder(Simulation& sim) {
-    sim.start();
-    std::vector<Vec3> f(sim.state().acceleration.size());
-    for (std::size_t a = 0; a < f.size(); ++a)
-        f[a] = sim.reference().mass[a] * sim.state().acceleration[a];
-    return f;
-}
-
 // σ = diag(p, q, p) is in equilibrium in a body of revolution (∂σ_rr/∂r + (σ_rr − σ_θθ)/r = 0):
 // on a uniform section the pair sums and the hoop force cancel exactly in the interior. The scale
 // is the hoop force itself, V p / R.
@@ -113,7 +104,7 @@ TEST(Axisymmetric, UniformStressInEquilibriumGivesZeroInteriorForce) {
                    SolverOptions{});
     const double p = 3e8, q = -1.2e8;
     for (Mat3& sigma : sim.state().cauchy) sigma = Vec3(p, q, p).asDiagonal();
-    const std::vector<Vec3> f = forcesUnder(sim);
+    const std::vector<Vec3> f = testing::forcesUnder(sim);
     const Reference& ref = sim.reference();
     double worst = 0.0, boundary = 0.0;
     const std::vector<Index> interior =
@@ -254,18 +245,13 @@ State axisymmetricImpact(int threads) {
     return sim.state();
 }
 
-template <class T>
-bool bitIdentical(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
-}
-
 TEST(Axisymmetric, ImpactIsBitIdenticalOnOneAndTwoThreads) {
     const State one = axisymmetricImpact(1), two = axisymmetricImpact(2);
-    EXPECT_TRUE(bitIdentical(one.x, two.x));
-    EXPECT_TRUE(bitIdentical(one.v, two.v));
-    EXPECT_TRUE(bitIdentical(one.cauchy, two.cauchy));
-    EXPECT_TRUE(bitIdentical(one.F, two.F));
-    EXPECT_TRUE(bitIdentical(one.plasticStrain, two.plasticStrain));
+    EXPECT_TRUE(testing::bitIdentical(one.x, two.x));
+    EXPECT_TRUE(testing::bitIdentical(one.v, two.v));
+    EXPECT_TRUE(testing::bitIdentical(one.cauchy, two.cauchy));
+    EXPECT_TRUE(testing::bitIdentical(one.F, two.F));
+    EXPECT_TRUE(testing::bitIdentical(one.plasticStrain, two.plasticStrain));
     EXPECT_EQ(std::memcmp(&one.ledger, &two.ledger, sizeof(EnergyLedger)), 0);
     double flowed = 0.0;
     for (double e : one.plasticStrain) flowed = std::max(flowed, e);

@@ -21,6 +21,7 @@ namespace gsph {
 namespace {
 
 using testing::builtReference;
+using testing::forcesUnder;
 using testing::interiorParticles;
 using testing::supportCells;
 using Kind = AxisGrading::Kind;
@@ -84,15 +85,6 @@ TEST(PatchTest, AffineMotionGivesExactF) {
                     ref.size());
         EXPECT_LE(worst, 2e-13) << s.name;  // measured ≤ 4.4e-14
     }
-}
-
-// Internal force under the state (F, σ) set by `setup`, as f = m a.
-std::vector<Vec3> forcesUnder(Simulation& sim) {
-    sim.start();
-    std::vector<Vec3> f(sim.state().acceleration.size());
-    for (std::size_t a = 0; a < f.size(); ++a)
-        f[a] = sim.reference().mass[a] * sim.state().acceleration[a];
-    return f;
 }
 
 // Largest single-pair term |ω_b K_c ∇W_cb| of particle c: the scale of "one pair's force".

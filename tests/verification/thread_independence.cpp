@@ -15,9 +15,12 @@
 #include "spaces/analytic_maps.hpp"
 #include "support/contact_fixtures.hpp"
 #include "support/johnson_cook_materials.hpp"
+#include "support/lattice_fixtures.hpp"
 
 namespace gsph {
 namespace {
+
+using testing::bitIdentical;
 
 State runWithThreads(int threads, EnergyReport* energy, const Material& material, int steps = 150,
                      double bondStretch = 0.0, FailedBondRule failedBonds = FailedBondRule::Keep) {
@@ -41,11 +44,6 @@ State runWithThreads(int threads, EnergyReport* energy, const Material& material
     *energy = sim.energy();
     omp_set_num_threads(saved);
     return sim.state();
-}
-
-template <class T>
-bool bitIdentical(const std::vector<T>& a, const std::vector<T>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
 }
 
 const Material kSteel = HypoElastic(ElasticConstants(7800.0, 200e9, 0.3));
