@@ -139,7 +139,7 @@ void renderSnapshot(const Snapshot& s, const std::string& field, const std::file
         points->InsertNextPoint(s.state.x[i].data());
         vertices->InsertNextCell(1, &a);
         values->InsertNextValue(scalarField(s, i, field));
-        radius->InsertNextValue(0.5 * std::cbrt(s.volume[i] * s.state.F[i].determinant()));
+        radius->InsertNextValue(splatRadius(s, i));
         lo = lo.cwiseMin(s.state.x[i]);
         hi = hi.cwiseMax(s.state.x[i]);
     }

@@ -22,6 +22,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <type_traits>
@@ -210,7 +211,7 @@ void addParticleArrays(vtkDataSetAttributes* out, const Snapshot& snap, const Ro
         p[k] = gsph::pressure(snap.state.cauchy[i]);
         detF[k] = snap.state.F[i].determinant();
         ids[k] = static_cast<int>(i);
-        r[k] = 0.5 * std::cbrt(snap.volume[i] * detF[k]);
+        r[k] = splatRadius(snap, i);
     });
     for (vtkDataArray* arr :
          std::initializer_list<vtkDataArray*>{displacement, mises, pressure, J, id, radius})
@@ -275,6 +276,13 @@ std::string xmlEscaped(const std::string& text) {
 }
 
 }  // namespace
+
+double splatRadius(const Snapshot& s, std::size_t i) {
+    const double volume = s.volume[i] * s.state.F[i].determinant();
+    if (s.dimension == 3) return 0.5 * std::cbrt(volume);
+    const double ring = s.axisymmetric ? 2.0 * std::numbers::pi * s.state.x[i][0] : 1.0;
+    return 0.5 * std::sqrt(volume / ring);
+}
 
 void writeVtu(const std::filesystem::path& path, const Snapshot& snap, const RunLabels& labels) {
     const vtkIdType n = snap.size();

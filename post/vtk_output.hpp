@@ -38,6 +38,11 @@ bool isScalarField(const std::string& name);
 /// Throws InputError for a name not in scalarFieldNames().
 double scalarField(const Snapshot& snapshot, std::size_t particle, const std::string& name);
 
+/// The scale of ParaView's Point Gaussian for particle i, so that neighbours' splats touch: half
+/// the edge of a cube of its current volume V J (3-D), or of a square of its current area (2-D:
+/// V J per metre of depth in plane strain, V J / 2πr of a ring in an axisymmetric run).
+double splatRadius(const Snapshot& snapshot, std::size_t i);
+
 /// Names for the field data: the particle file's bodies (by body id) and sets (empty: not known).
 struct RunLabels {
     std::vector<std::string> bodyNames, setNames;

@@ -150,6 +150,7 @@ Snapshot snapshotOf(const Reference& ref, const State& state) {
     });
     s.X = ref.X;
     s.axisymmetric = ref.dim.axisymmetric;
+    s.dimension = ref.dim.value;
     s.volume = ref.quadVolume;
     s.body = ref.body;
     s.space = ref.space;
@@ -173,6 +174,8 @@ void writeSnapshot(const std::filesystem::path& path, const Reference& ref, cons
         f.write("/step", &step, {1});
         const std::int8_t axisymmetric = s.axisymmetric ? 1 : 0;
         f.write("/axisymmetric", &axisymmetric, {1});
+        const std::int32_t dimension = s.dimension;
+        f.write("/dimension", &dimension, {1});
         s.forEachField([&](const Field& field, const auto& array) {
             const std::string name = std::string("/particles/") + field.name;
             writeField(f, name, array);
@@ -195,6 +198,10 @@ Snapshot readSnapshot(const std::filesystem::path& path) {
     s.state.step = static_cast<long>(f.read<double>("/step", dims).at(0));
     if (f.exists("/axisymmetric"))  // since 0.6
         s.axisymmetric = f.read<std::int8_t>("/axisymmetric", dims).at(0) != 0;
+    if (f.exists("/dimension")) s.dimension = f.read<std::int32_t>("/dimension", dims).at(0);
+    if (s.dimension != 2 && s.dimension != 3)
+        throw IoError(path.string() + ": /dimension is " + std::to_string(s.dimension) +
+                      ", neither 2 nor 3");
     // The particle count from the first field (X, N×3); every other field must agree.
     f.read<double>("/particles/X", dims);
     if (dims.size() != 2 || dims[1] != 3)
@@ -235,6 +242,7 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
             w.value(s.state.time);
             w.value(s.state.step);
             w.value<std::uint8_t>(s.axisymmetric ? 1 : 0);
+            w.value<std::int32_t>(s.dimension);
             s.forEachField([&](const Field&, const auto& array) { w.array(array); });
             w.array(s.brokenBonds);
             writeProvenance(w, s.provenance);
@@ -249,6 +257,7 @@ Snapshot readSnapshotIsolated(const std::filesystem::path& path, unsigned deadli
     s.state.time = r.value<double>();
     s.state.step = r.value<long>();
     s.axisymmetric = r.value<std::uint8_t>() != 0;
+    s.dimension = r.value<std::int32_t>();
     s.forEachField([&](const Field&, auto& array) {
         array = r.array<typename std::decay_t<decltype(array)>::value_type>();
     });

@@ -4,7 +4,8 @@
 // (io/atomic_file.hpp).
 //
 //   /time, /step                 (1 element each)
-//   /axisymmetric                (1 int8: 1 for an axisymmetric run's section; since 0.6)
+//   /dimension, /axisymmetric    (1 int32: 3 or 2; 1 int8: 1 for an axisymmetric run's section;
+//                                since 0.6)
 //   /particles/NAME              one dataset per field of Snapshot::forEachField, with its
 //                                `units` attribute: N×3 (vectors), N×9 row-major (tensors), N
 //   /bonds/broken                M×2 int32 particle pairs (a < b) whose bond broke (M may be 0)
@@ -29,7 +30,7 @@ namespace gsph {
 inline constexpr const char* kSnapshotFormat = "gsph-snapshot";
 inline constexpr int kSnapshotFormatMajor = 0;
 /// 0.5: internal_energy, plastic_work, damage_driver (older files read them as zeros);
-/// 0.6: /axisymmetric (older files: 0).
+/// 0.6: /dimension and /axisymmetric (older files: 3 and 0).
 inline constexpr int kSnapshotFormatMinor = 6;
 
 /// What a snapshot holds, read back as plain arrays.
@@ -51,6 +52,7 @@ struct Snapshot {
     /// The run was axisymmetric (a 2-D section whose particles are rings; its volumes are the
     /// rings' volumes).
     bool axisymmetric = false;
+    int dimension = 3;  ///< 2 for a run of a 2-D particle file (plane strain or axisymmetric)
     Index size() const { return static_cast<Index>(X.size()); }
 
     /// Calls visit(field, array) for every per-particle array, in the files' order, with its

@@ -29,6 +29,7 @@
 #include "io/snapshot.hpp"
 #include "support/process.hpp"
 #include "tools/temp_dir.hpp"
+#include "vtk_output.hpp"
 
 namespace gsph {
 namespace {
@@ -456,6 +457,29 @@ TEST(RevolvedSolid, PlaneStrainRunIsRefused) {
               std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(run / "post/solid_revolved.pvd"));
+}
+
+}  // namespace
+}  // namespace gsph
+
+namespace gsph {
+namespace {
+
+// The splat radius is half the edge of the particle's current cell: a cube in 3-D, a square of
+// its area per metre in plane strain, of its ring's cross-section in an axisymmetric run.
+TEST(SplatRadius, HalfTheCurrentCellsEdgeInEachDimension) {
+    Snapshot s;
+    s.volume = {8e-9};
+    s.state.F = {Vec3(1.5, 1.0, 1.0).asDiagonal()};
+    s.state.x = {Vec3(0.25, 0.0, 0.0)};
+    EXPECT_NEAR(post::splatRadius(s, 0), 0.5 * std::cbrt(1.2e-8), 1e-18);
+    s.dimension = 2;
+    s.volume = {4e-6};  // 2 mm × 2 mm per metre of depth
+    EXPECT_NEAR(post::splatRadius(s, 0), 0.5 * std::sqrt(6e-6), 1e-18);
+    s.axisymmetric = true;  // the ring of that section at R = 0.2, now at r = 0.25, F_zz = 1.25
+    s.volume = {2 * std::numbers::pi * 0.2 * 4e-6};
+    s.state.F = {Vec3(1.5, 1.0, 1.25).asDiagonal()};
+    EXPECT_NEAR(post::splatRadius(s, 0), 0.5 * std::sqrt(6e-6), 1e-15);
 }
 
 }  // namespace
