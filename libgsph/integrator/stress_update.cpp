@@ -39,6 +39,7 @@ struct KinematicsStep {
     double dt;
     bool atRest;  // only derive the factors from the current F and σ (initialisation)
     Mat3 outOfPlane;
+    bool axisymmetric;  // F_zz is the hoop stretch (particles/axisymmetry.hpp)
     const BrittleBonds& bonds;
     const Mat3* G;  // per particle: the reference's, or recomputed over surviving bonds
     const ViscosityCoefficients& viscosity;
@@ -85,11 +86,13 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     const auto ia = static_cast<std::size_t>(a);
     const Mat3& G = s.G[ia];
     Mat3 Fdot = gradV * G.transpose();
-    Mat3 F = gradX * G.transpose() + s.outOfPlane;
-    if (s.ref.dim.axisymmetric) setHoopStretch(s.ref.X[ia], s.state.x[ia], s.state.v[ia], F, Fdot);
+    if (s.axisymmetric) Fdot(2, 2) = hoopStretchRate(s.ref.X[ia], s.state.v[ia]);
     // A particle that lost bonds in a body whose bonds break by damage integrates F in time
     // (failure/brittle_bonds.hpp, integratesF): F over the surviving bonds would jump.
-    if (s.bonds.integratesF(a)) F = s.state.F[ia] + s.dt * Fdot;
+    const bool integrated = s.bonds.integratesF(a);
+    Mat3 F =
+        integrated ? Mat3(s.state.F[ia] + s.dt * Fdot) : Mat3(gradX * G.transpose() + s.outOfPlane);
+    if (s.axisymmetric && !integrated) F(2, 2) = hoopStretch(s.ref.X[ia], s.state.x[ia]);
     const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
     MaterialPoint point;
     point.cauchy = s.state.cauchy[ia];
@@ -220,6 +223,7 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      dt,
                      atRest,
                      ref_.dim.outOfPlane(),
+                     ref_.dim.axisymmetric,
                      bonds_,
                      bonds_.G().data(),
                      viscosity_};

@@ -17,10 +17,7 @@ void deformationGradient(const Reference& ref, const std::vector<Vec3>& x, std::
         thetaGradients(ref, a, x.data(), x.data(), gradX, gradV, nullptr, ref.pairCorrections(a));
         const auto ia = static_cast<std::size_t>(a);
         F[ia] = gradX * ref.G[ia].transpose() + outOfPlane;
-        if (ref.dim.axisymmetric) {
-            Mat3 unusedRate = Mat3::Zero();
-            setHoopStretch(ref.X[ia], x[ia], Vec3::Zero(), F[ia], unusedRate);
-        }
+        if (ref.dim.axisymmetric) F[ia](2, 2) = hoopStretch(ref.X[ia], x[ia]);
     });
 }
 

@@ -24,10 +24,14 @@ inline double ringFactor(const Vec3& X) {
     return 2.0 * std::numbers::pi * X[0];
 }
 
-/// Sets F's and Ḟ's hoop entries of a particle at reference X, current x and velocity v.
-inline void setHoopStretch(const Vec3& X, const Vec3& x, const Vec3& v, Mat3& F, Mat3& Fdot) {
-    F(2, 2) = x[0] / X[0];
-    Fdot(2, 2) = v[0] / X[0];
+/// F_zz of a particle at reference X and current x: the hoop stretch r/R.
+inline double hoopStretch(const Vec3& X, const Vec3& x) {
+    return x[0] / X[0];
+}
+
+/// Ḟ_zz of a particle at reference X moving at v: v_r/R.
+inline double hoopStretchRate(const Vec3& X, const Vec3& v) {
+    return v[0] / X[0];
 }
 
 }  // namespace gsph
