@@ -19,15 +19,19 @@ DefineConstant[
   R = {3.8e-3, Name "Parameters/R"},      // radius [m]
   L = {25.4e-3, Name "Parameters/L"},     // length [m]
   nr = {8, Name "Parameters/nr"},         // cells across the radius
+  nz = {0, Name "Parameters/nz"},         // cells along the axis (0: as many as keep them square)
+  grading = {1, Name "Parameters/grading"},  // ratio of successive cell lengths from the impact face
+  lip = {1, Name "Parameters/lip"},       // ratio of successive cell widths from the axis to x = R
+                                          // (below 1: finer towards the lip)
   refine = {1, Name "Parameters/refine"}  // multiplies every cell count (convergence studies)
 ];
 // Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
 // or a crash inside gmsh.
-If (R <= 0 || L <= 0 || nr < 1 || refine < 1)
-  Error("taylor_bar_axisymmetric.geo: needs R, L > 0; nr, refine ≥ 1 (got R = %g, L = %g, nr = %g, refine = %g)", R, L, nr, refine);
+If (R <= 0 || L <= 0 || nr < 1 || nz < 0 || grading <= 0 || lip <= 0 || refine < 1)
+  Error("taylor_bar_axisymmetric.geo: needs R, L, grading, lip > 0; nr, refine ≥ 1; nz ≥ 0 (got R = %g, L = %g, nr = %g, nz = %g, grading = %g, lip = %g, refine = %g)", R, L, nr, nz, grading, lip, refine);
 EndIf
 cells_r = Round(nr * refine);
-cells_z = Round(cells_r * L / R);  // square cells: the same spacing along the axis
+cells_z = nz > 0 ? Round(nz * refine) : Round(cells_r * L / R);  // default: square cells
 
 Point(1) = {0, 0, 0};  Point(2) = {R, 0, 0};  Point(3) = {R, L, 0};  Point(4) = {0, L, 0};
 Line(1) = {1, 2};  // y = 0: the impact face
@@ -37,8 +41,8 @@ Line(4) = {1, 4};  // x = 0: the axis
 Curve Loop(1) = {1, 2, -3, -4};
 Plane Surface(1) = {1};
 
-Transfinite Curve{1, 3} = cells_r + 1;
-Transfinite Curve{2, 4} = cells_z + 1;
+Transfinite Curve{1, 3} = cells_r + 1 Using Progression lip;  // from the axis outwards
+Transfinite Curve{2, 4} = cells_z + 1 Using Progression grading;  // from the impact face up
 Transfinite Surface{1};
 Recombine Surface{1};
 
