@@ -162,7 +162,7 @@ HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std:
 
     // The particles of each space and their cells (lattice_index, or the rank in the space).
     std::vector<SpaceCells> spaces(f.spaces.size());
-    std::vector<std::size_t> rank(f.spaces.size(), 0);
+    const std::vector<std::array<Index, 3>> cellOf = latticeCells(f);
     for (std::size_t s = 0; s < spaces.size(); ++s) {
         const auto& c = f.spaces[s].cells;
         spaces[s].space = &f.spaces[s];
@@ -171,15 +171,7 @@ HexSolid::HexSolid(const ParticleFile& f, const std::vector<Vec3>& X, const std:
     for (std::size_t a = 0; a < n; ++a) {
         const auto s = static_cast<std::size_t>(f.space[a]);
         SpaceCells& sc = spaces[s];
-        Cell c;
-        if (!f.latticeIndex.empty()) {
-            c = {f.latticeIndex[a][0], f.latticeIndex[a][1], f.latticeIndex[a][2]};
-        } else {
-            const auto& cells = f.spaces[s].cells;
-            const std::size_t r = rank[s]++;
-            c = {static_cast<int>(r % cells[0]), static_cast<int>(r / cells[0] % cells[1]),
-                 static_cast<int>(r / cells[0] / cells[1])};
-        }
+        const Cell c = {cellOf[a][0], cellOf[a][1], cellOf[a][2]};
         Index& at = sc.particleAt[sc.row(c)];
         if (at >= 0)
             throw InputError(source + ": particles " + std::to_string(at) + " and " +
