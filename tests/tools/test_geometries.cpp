@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "gmsh_input.hpp"
 #include "gmsh_reference.hpp"
+#include "mesh_errors.hpp"
 #include "overset_checks.hpp"
 #include "particle_checks.hpp"
 #include "temp_dir.hpp"
@@ -612,44 +613,33 @@ TEST(Geometries, ParametersDoNotLeakBetweenCalls) {
     EXPECT_EQ(before, after);  // the same mesh, converted the same way: bit-identical
 }
 
-/// Reads and converts a fixture from tests/data; returns the error message, "" if none.
-template <class Error>
-std::string errorOf(const std::string& file, const Parameters& parameters = {}) {
-    const std::string path = std::string(GSPH_SOURCE_DIR) + "/tests/data/" + file;
-    try {
-        std::vector<std::string> warnings;
-        convertHexMesh(readHexMesh(path, MeshReadOptions{parameters}, warnings));
-    } catch (const Error& e) {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(path + ": ", 0), 0u)
-            << "the message must start with the file: " << what;
-        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-        return what;
-    }
-    ADD_FAILURE() << file << ": no error";
-    return "";
-}
-
 TEST(PreprocErrors, BadInputsGiveClearErrors) {
-    EXPECT_NE(errorOf<InputError>("missing.geo").find("no such file"), std::string::npos);
-    EXPECT_NE(errorOf<InputError>("bad_syntax.geo").find("line 3: syntax error"),
+    EXPECT_NE(test::meshErrorOf<InputError>("missing.geo").find("no such file"), std::string::npos);
+    EXPECT_NE(test::meshErrorOf<InputError>("bad_syntax.geo").find("line 3: syntax error"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("tetrahedra.geo").find("4-node tetrahedra"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("mixed.msh").find("6-node prisms"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("unstructured_hex.geo").find("not a structured hex block"),
+    EXPECT_NE(test::meshErrorOf<MeshError>("tetrahedra.geo").find("4-node tetrahedra"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("inverted.msh").find("element 2 in volume 1 at ("),
+    EXPECT_NE(test::meshErrorOf<MeshError>("mixed.msh").find("6-node prisms"), std::string::npos);
+    EXPECT_NE(
+        test::meshErrorOf<MeshError>("unstructured_hex.geo").find("not a structured hex block"),
+        std::string::npos);
+    EXPECT_NE(test::meshErrorOf<MeshError>("inverted.msh").find("element 2 in volume 1 at ("),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("inverted.msh").find(") is inverted"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("folded.msh").find("folds"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("empty.msh").find("no hexahedra"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("no_volume.geo").find("no hexahedra"), std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("ungrouped_volume.geo").find("volume 2 is in no physical volume"),
+    EXPECT_NE(test::meshErrorOf<MeshError>("inverted.msh").find(") is inverted"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("bad_transfinite.geo").find("transfinite"), std::string::npos);
-    EXPECT_NE(errorOf<InputError>("inverted.msh", {{"refine", 2}}).find(".geo files only"),
+    EXPECT_NE(test::meshErrorOf<MeshError>("folded.msh").find("folds"), std::string::npos);
+    EXPECT_NE(test::meshErrorOf<MeshError>("empty.msh").find("no hexahedra"), std::string::npos);
+    EXPECT_NE(test::meshErrorOf<MeshError>("no_volume.geo").find("no hexahedra"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("cylinder_single_space.geo")
+    EXPECT_NE(test::meshErrorOf<MeshError>("ungrouped_volume.geo")
+                  .find("volume 2 is in no physical volume"),
+              std::string::npos);
+    EXPECT_NE(test::meshErrorOf<MeshError>("bad_transfinite.geo").find("transfinite"),
+              std::string::npos);
+    EXPECT_NE(
+        test::meshErrorOf<InputError>("inverted.msh", {{"refine", 2}}).find(".geo files only"),
+        std::string::npos);
+    EXPECT_NE(test::meshErrorOf<MeshError>("cylinder_single_space.geo")
                   .find("collapses onto the line from (0, 0, 0.002) to (0, 0, 0), like a single "
                         "cylindrical space on its axis"),
               std::string::npos);

@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "gmsh_input.hpp"
 #include "kinematics/deformation_gradient.hpp"
+#include "mesh_errors.hpp"
 #include "particle_checks.hpp"
 #include "reference/reference_builder.hpp"
 #include "temp_dir.hpp"
@@ -278,38 +279,20 @@ TEST(Preproc2d, MshGivesTheSameParticlesAsGeo) {
     EXPECT_LT(worst, 1e-17);
 }
 
-/// Reads and converts a fixture; returns the error message, "" if none.
-template <class Error>
-std::string errorOf(const std::string& file) {
-    const std::string path = fixture(file);
-    try {
-        std::vector<std::string> warnings;
-        convertHexMesh(readHexMesh(path, {}, warnings));
-    } catch (const Error& e) {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(path + ": ", 0), 0u)
-            << "the message must start with the file: " << what;
-        EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-        return what;
-    }
-    ADD_FAILURE() << file << ": no error";
-    return "";
-}
-
 TEST(Preproc2d, BadPlaneMeshesGiveClearErrors) {
-    EXPECT_NE(errorOf<MeshError>("triangles_2d.geo")
+    EXPECT_NE(test::meshErrorOf<MeshError>("triangles_2d.geo")
                   .find("surface 1 holds 18 3-node triangles; gsph-preproc needs structured "
                         "blocks of 4-node quadrangles in 2-D"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("unstructured_quads_2d.geo")
+    EXPECT_NE(test::meshErrorOf<MeshError>("unstructured_quads_2d.geo")
                   .find("surface 1 is not a structured quad block"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("mixed_2d_3d.geo")
+    EXPECT_NE(test::meshErrorOf<MeshError>("mixed_2d_3d.geo")
                   .find("the mesh mixes 2-D and 3-D elements (surface 101"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("no_volume.geo").find("no hexahedra or quadrangles"),
+    EXPECT_NE(test::meshErrorOf<MeshError>("no_volume.geo").find("no hexahedra or quadrangles"),
               std::string::npos);
-    EXPECT_NE(errorOf<MeshError>("off_plane_2d.geo")
+    EXPECT_NE(test::meshErrorOf<MeshError>("off_plane_2d.geo")
                   .find("a 2-D mesh must lie in the plane z = 0 (its node at (0, 0, 1) does not)"),
               std::string::npos);
 }
