@@ -22,11 +22,13 @@ DefineConstant[
   nr = {4, Name "Parameters/nr"},             // cells from the core to the outer surface
   nz = {40, Name "Parameters/nz"},            // cells along the axis
   grading = {1.03, Name "Parameters/grading"},  // ratio of successive cell lengths from z = 0
+  lip = {1, Name "Parameters/lip"},           // ratio of successive radial cells from the core
+                                              // to the surface (below 1: finer at the lip)
   refine = {1, Name "Parameters/refine"}      // multiplies every cell count (convergence studies)
 ];
 // Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
 // or a crash inside gmsh.
-If (R <= 0 || L <= 0 || core <= 0 || grading <= 0 || n < 1 || nr < 1 || nz < 1 || refine < 1)
+If (R <= 0 || L <= 0 || core <= 0 || grading <= 0 || lip <= 0 || n < 1 || nr < 1 || nz < 1 || refine < 1)
   Error("taylor_bar.geo: needs R, L, core, grading > 0; n, nr, nz, refine ≥ 1 (got R = %g, L = %g, core = %g, grading = %g, n = %g, nr = %g, nz = %g, refine = %g)", R, L, core, grading, n, nr, nz, refine);
 EndIf
 c = core * R;
@@ -46,7 +48,11 @@ For k In {0:3}
   arc[k] = newl;    Circle(arc[k]) = {rim[k], 1, rim[(k + 1) % 4]};  // a quarter of the rim
 EndFor
 Transfinite Curve{side[], arc[]} = n * refine + 1;
-Transfinite Curve{spoke[]} = nr * refine + 1;
+If (lip == 1)
+  Transfinite Curve{spoke[]} = nr * refine + 1;
+Else
+  Transfinite Curve{spoke[]} = nr * refine + 1 Using Progression lip^(1 / refine);
+EndIf
 
 loop = newll; Curve Loop(loop) = {side[]};
 section[0] = news; Plane Surface(section[0]) = {loop};  // core
