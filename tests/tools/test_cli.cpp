@@ -63,7 +63,8 @@ TEST(PreprocCli, ConvertsA2dQuadMeshIntoA2dFile) {
     for (const char* expected :
          {"particles  424 in 1 space, 1 body, from 424 quadrangles (2-D)", "cells 8x53x1",
           "gmsh surfaces 1", "'rod'", "area 9.652000e-05 m^2", "'axis' 53", "'impact' 8",
-          "'lateral' 53", "'free_end' 8", "spacing    quad edge length from 4.7500e-04 m to 4.7925e-04 m",
+          "'lateral' 53", "'free_end' 8",
+          "spacing    quad edge length from 4.7500e-04 m to 4.7925e-04 m",
           "metric     space 0   worst cond(dX/dtheta) in the plane 1.009"}) {
         EXPECT_NE(r.out.find(expected), std::string::npos) << expected << "\n" << r.out;
     }
