@@ -354,52 +354,25 @@ void reportMetric(const Assembly& as, Conversion& out) {
     }
 }
 
-/// In a 2-D mesh (quads extruded to unit depth along z), turns every space so that its third
-/// index runs along the extrusion, towards +z: the 2-D file has its one cell along index 2,
-/// and the in-plane frame (i, j) stays right-handed. Block frames follow x, y, z
-/// (block_indexing.hpp), so this is the identity unless gluing turned a space.
-void alignExtrusionAxis(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
-                        GluingResult& glued) {
-    for (GluedSpace& space : glued.spaces) {
+/// In a 2-D mesh (quads extruded to unit depth along z) every space's third index must run
+/// along the extrusion, towards +z: the 2-D file has its one cell along index 2. Block frames
+/// follow x, y, z (block_indexing.hpp) and a space takes its first block's frame, so this holds
+/// by construction; the check names the surface if it ever does not.
+void checkExtrusionAxis(const HexMesh& mesh, const std::vector<BlockLattice>& blocks,
+                        const GluingResult& glued) {
+    for (const GluedSpace& space : glued.spaces) {
         const BlockLattice& block = blocks[static_cast<std::size_t>(space.blocks[0])];
         const Vec3& origin = mesh.nodes[static_cast<std::size_t>(block.node(0, 0, 0))];
-        int blockAxis = -1, blockSign = 0;
-        for (int a = 0; a < 3 && blockAxis < 0; ++a) {
-            if (block.cells[a] != 1) continue;
-            const Index far = block.node(a == 0, a == 1, a == 2);
-            const Vec3 step = mesh.nodes[static_cast<std::size_t>(far)] - origin;
-            if (step[0] == 0.0 && step[1] == 0.0 && std::abs(step[2]) == 1.0) {
-                blockAxis = a;
-                blockSign = step[2] > 0.0 ? 1 : -1;
-            }
-        }
-        if (blockAxis < 0) {
-            throw MeshError(mesh.source + ": internal error: surface " +
-                            std::to_string(block.volumeTag) + "'s block is not one layer thick");
-        }
         const SignedPermutation& toSpace = space.toSpace[0].R;
-        int axis = 0;
-        while (toSpace.perm[axis] != blockAxis) ++axis;
-        const int sign = toSpace.sign[axis] * blockSign;
-        if (axis == 2 && sign == 1) continue;
-        SignedPermutation turn;
-        for (const SignedPermutation& r : SignedPermutation::rotations()) {
-            if (r.perm[2] == axis && r.sign[2] == sign) {
-                turn = r;
-                break;
-            }
+        const int blockAxis = toSpace.perm[2];
+        const Index far = block.node(blockAxis == 0, blockAxis == 1, blockAxis == 2);
+        const Vec3 step = mesh.nodes[static_cast<std::size_t>(far)] - origin;
+        if (block.cells[blockAxis] != 1 || step[0] != 0.0 || step[1] != 0.0 ||
+            step[2] * toSpace.sign[2] != 1.0) {
+            throw MeshError(mesh.source + ": internal error: surface " +
+                            std::to_string(block.volumeTag) +
+                            "'s space does not have the extrusion as its third index");
         }
-        LatticeTransform shift{turn, {0, 0, 0}};
-        Int3 cells{};
-        std::array<bool, 3> periodic{};
-        for (int d = 0; d < 3; ++d) {
-            cells[d] = space.cells[turn.perm[d]];
-            periodic[d] = space.periodic[turn.perm[d]];
-            if (turn.sign[d] < 0) shift.t[d] = cells[d];
-        }
-        for (LatticeTransform& t : space.toSpace) t = shift.after(t);
-        space.cells = cells;
-        space.periodic = periodic;
     }
 }
 
@@ -413,7 +386,6 @@ void flattenToPlane(const HexMesh& mesh, ParticleFile& pf) {
                             ": internal error: a 2-D space is not one cell along its third index");
         }
     }
-    pf.dimension = 2;
     for (Vec3& X : pf.X) X[2] = 0.0;
     for (Vec3& theta : pf.theta) theta[2] = 0.0;
     for (Vec3& theta : pf.overset.theta) theta[2] = 0.0;
@@ -471,8 +443,8 @@ Conversion convertHexMesh(const HexMesh& mesh, const ConversionOptions& options)
     std::vector<BlockLattice> blocks;
     blocks.reserve(mesh.volumes.size());
     for (const HexVolume& v : mesh.volumes) blocks.push_back(indexBlock(mesh, v, adjacency));
-    GluingResult glued = glueBlocks(blocks, bodyOfVolume);
-    if (mesh.dimension == 2) alignExtrusionAxis(mesh, blocks, glued);
+    const GluingResult glued = glueBlocks(blocks, bodyOfVolume);
+    if (mesh.dimension == 2) checkExtrusionAxis(mesh, blocks, glued);
     if (options.latticeSpacing != 0.0) {  // the uniform layout of standard SPH instead
         out.stats.minEdge = INFINITY;
         fillUniformLattice(mesh, blocks, glued, bodyOfVolume, adjacency, options.latticeSpacing,

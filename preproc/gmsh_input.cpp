@@ -372,6 +372,24 @@ std::string collapsedAxisNote(const std::vector<int>& types,
            "axis with a Cartesian core block (an O-grid, as in geometries/taylor_bar.geo)";
 }
 
+/// How many elements of type `wanted` an entity holds, and the others as "N name, …" ("" if
+/// none).
+std::pair<std::size_t, std::string> elementCensus(
+    const std::vector<int>& types, const std::vector<std::vector<std::size_t>>& elementTags,
+    int wanted) {
+    std::size_t count = 0;
+    std::string others;
+    for (std::size_t t = 0; t < types.size(); ++t) {
+        if (types[t] == wanted) {
+            count = elementTags[t].size();
+            continue;
+        }
+        if (!others.empty()) others += ", ";
+        others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
+    }
+    return {count, others};
+}
+
 void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
     gmsh::vectorpair entities;
     gmsh::model::getEntities(entities, 3);
@@ -380,16 +398,7 @@ void readVolumes(const std::string& source, const NodeIds& ids, HexMesh& mesh) {
         std::vector<int> types;
         std::vector<std::vector<std::size_t>> elementTags, nodeTags;
         gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
-        std::string others;
-        std::size_t hexes = 0;
-        for (std::size_t t = 0; t < types.size(); ++t) {
-            if (types[t] == kHex8) {
-                hexes = elementTags[t].size();
-                continue;
-            }
-            if (!others.empty()) others += ", ";
-            others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
-        }
+        const auto [hexes, others] = elementCensus(types, elementTags, kHex8);
         if (!others.empty()) {
             const std::string axis = collapsedAxisNote(types, nodeTags, ids, mesh.nodes);
             throw MeshError(
@@ -540,16 +549,7 @@ void readSurfacesAsSlab(const std::string& source, const NodeIds& ids, HexMesh& 
         std::vector<int> types;
         std::vector<std::vector<std::size_t>> elementTags, nodeTags;
         gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, tag);
-        std::string others;
-        std::size_t quads = 0;
-        for (std::size_t t = 0; t < types.size(); ++t) {
-            if (types[t] == kQuad4) {
-                quads = elementTags[t].size();
-                continue;
-            }
-            if (!others.empty()) others += ", ";
-            others += std::to_string(elementTags[t].size()) + " " + elementName(types[t]);
-        }
+        const auto [quads, others] = elementCensus(types, elementTags, kQuad4);
         if (!others.empty()) {
             throw MeshError(
                 source + ": surface " + std::to_string(tag) + " holds " + others +
