@@ -17,7 +17,6 @@
 #include "io/particle_file.hpp"
 #include "io/sha256.hpp"
 #include "io/snapshot.hpp"
-#include "particles/axisymmetry.hpp"
 #include "probes.hpp"
 #include "progress.hpp"
 #include "reference/reference_builder.hpp"
@@ -451,8 +450,7 @@ std::string sizeLine(const Reference& ref) {
     for (Index a = 0; a < ref.size(); ++a) {
         const auto ia = static_cast<std::size_t>(a);
         totalMass += ref.mass[ia];
-        meshMass +=
-            ref.density[ia] * ref.volume[ia] * (ref.dim.axisymmetric ? ringFactor(ref.X[ia]) : 1.0);
+        meshMass += ref.density[ia] * ref.meshVolume(ia);
     }
     char line[512];
     std::snprintf(line, sizeof line,

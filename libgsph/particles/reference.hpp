@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "core/types.hpp"
+#include "particles/axisymmetry.hpp"
 #include "particles/pair_list.hpp"
 
 namespace gsph {
@@ -83,8 +84,13 @@ struct Reference {
     std::vector<Vec3> theta;      ///< coordinates in the home space [θ units]
     std::vector<double> density;  ///< ρ0 [kg/m³]
     std::vector<double> volume;   ///< exact cell volume from the map or mesh [m³] (per m in 2-D)
-    std::vector<Index> body;      ///< body id; particles sorted by it
-    std::vector<Index> space;     ///< home space id
+    /// The cell's meshed volume as the run sees it: `volume`, or in an axisymmetric run its ring,
+    /// 2πR × the cell's area [m³].
+    double meshVolume(std::size_t a) const {
+        return dim.axisymmetric ? ringFactor(X[a]) * volume[a] : volume[a];
+    }
+    std::vector<Index> body;            ///< body id; particles sorted by it
+    std::vector<Index> space;           ///< home space id
     std::vector<OversetEntry> overset;  ///< transient coordinates (empty: one space per body)
     /// κ the overset entries were selected with (gsph-preproc --overset-kappa; 0: not stored).
     /// A run needs κ ≤ this, or pairs near an interface would be missing.

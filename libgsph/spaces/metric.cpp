@@ -99,7 +99,7 @@ void computeGeometry(Reference& ref) {
         // An axisymmetric particle is a ring: its cross-section's area times 2πR.
         const double ring = ref.dim.axisymmetric ? ringFactor(ref.X[ia]) : 1.0;
         ref.quadVolume[ia] = ring * ref.omega[ia] * detM;
-        ref.mass[ia] = ref.density[ia] * (meshMass ? ring * ref.volume[ia] : ref.quadVolume[ia]);
+        ref.mass[ia] = ref.density[ia] * (meshMass ? ref.meshVolume(ia) : ref.quadVolume[ia]);
         const int d = ref.dim.value;
         const Vec3 s = d == 3 ? Vec3(Eigen::JacobiSVD<Mat3>(M).singularValues())
                               : Vec3(Eigen::JacobiSVD<Eigen::Matrix2d>(M.topLeftCorner<2, 2>())
