@@ -29,10 +29,11 @@ const toml::array* arrayOfTables(const std::string& file, const toml::table& roo
 void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     const toml::table* run = root["run"].as_table();
     if (!run) throw InputError(file + ":1: missing table [run]");
-    const TomlKeys r(file, *run, "[run]",
-                     {"particles", "end_time", "output_interval", "history_interval", "cfl",
-                      "kappa", "mass", "viscosity", "viscosity_switch", "hourglass",
-                      "checkpoint_interval", "min_dt_ratio", "gravity", "dimension"});
+    const TomlKeys r(
+        file, *run, "[run]",
+        {"particles", "end_time", "output_interval", "history_interval", "cfl", "kappa", "mass",
+         "viscosity", "viscosity_switch", "hourglass", "hourglass_modulus", "checkpoint_interval",
+         "min_dt_ratio", "gravity", "dimension"});
     c.particlesLine = run->get("particles")
                           ? static_cast<int>(run->get("particles")->source().begin.line)
                           : r.line();
@@ -66,6 +67,13 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.viscosity.switchMach =
         r.number("viscosity_switch", c.viscosity.switchMach, Sign::NonNegative);
     c.hourglass = r.number("hourglass", c.hourglass, Sign::NonNegative);
+    const std::string modulus = r.text("hourglass_modulus", "elastic");
+    if (modulus != "secant" && modulus != "elastic")
+        r.fail("hourglass_modulus",
+               "'hourglass_modulus' in [run] must be \"elastic\" or \"secant\", got '" + modulus +
+                   "'");
+    c.hourglassModulus =
+        modulus == "elastic" ? HourglassModulus::Elastic : HourglassModulus::Secant;
     c.checkpointInterval = r.number("checkpoint_interval", c.outputInterval, Sign::NonNegative);
     c.minDtRatio = r.number("min_dt_ratio", c.minDtRatio, Sign::NonNegative);
     if (c.minDtRatio >= 1.0)

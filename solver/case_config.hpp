@@ -11,6 +11,7 @@
 
 #include "core/types.hpp"
 #include "forces/artificial_viscosity.hpp"
+#include "forces/hourglass.hpp"
 #include "io/particle_file.hpp"
 #include "material_config.hpp"      // MaterialSpec: [[material]] tables and material files
 #include "particles/reference.hpp"  // MassBasis
@@ -110,6 +111,8 @@ struct CaseConfig {
     int dimensionLine = 0;  ///< where it is set (for messages)
     ViscosityCoefficients viscosity = kDefaultViscosity;
     double hourglass = 0.1;
+    /// [run] hourglass_modulus: "elastic" (default) or "secant" (forces/hourglass.hpp).
+    HourglassModulus hourglassModulus = HourglassModulus::Elastic;
     /// [s] of simulated time between checkpoints (default: output_interval; 0 = only on a
     /// signal).
     double checkpointInterval = 0.0;

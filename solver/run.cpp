@@ -395,6 +395,7 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
     solverOptions.cfl = c.cfl;
     solverOptions.viscosity = c.viscosity;
     solverOptions.hourglass = c.hourglass;
+    solverOptions.hourglassModulus = c.hourglassModulus;
     solverOptions.minTimeStepRatio = c.minDtRatio;
     solverOptions.bondStretch = bodies.bondStretch;
     for (const PrecrackSpec& p : c.precracks)

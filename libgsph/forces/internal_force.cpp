@@ -13,13 +13,18 @@ namespace {
 
 static_assert(kMinStencilRun >= kLanesOf<Lanes4>, "a stencil block holds a 4-lane strip");
 
+// What the hourglass penalty of a pair is (forces/hourglass.hpp): off, α E, or α E ½(s_a + s_b)
+// (the secant modulus in plastic flow). A template value, so that a run without the secant
+// modulus does not load s.
+constexpr int kNoHourglass = 0, kElasticHourglass = 1, kSecantHourglass = 2;
+
 // Raw component pointers of every field the pair terms read: the stencil loops index them
 // directly so that the compiler sees plain contiguous streams.
 struct ForceView {
     std::array<const double*, 9> K, N, F;
     const Mat3* G;  // per particle (bonds may have changed it)
     std::array<const double*, 3> x, v, X;
-    const double *h, *c, *rho, *alpha, *V;
+    const double *h, *c, *rho, *alpha, *hourglassScale, *V;
     const KernelEntry* table;
     ViscosityCoefficients viscosity;
     double alphaE;  // α E of the hourglass penalty [Pa]
@@ -70,7 +75,7 @@ template <class L, class Load>
 // pair means of h, c, ρ), and the hourglass pair forces (forces/hourglass.hpp) with
 // X_cb = X_c − X_b and x_cb = x_c − x_b: both signs flip against X_bc, x_bc, so ē·x keeps its
 // value and the force is +κ x_cb.
-template <bool Viscous, bool Hourglass, class L, class Load>
+template <bool Viscous, int Hourglass, class L, class Load>
 [[gnu::always_inline]] inline void pairStrip(const ForceView& in, const Stencil& st,
                                              const Load& load, Index a, Index i, BlockSums& s) {
     L sumQW[3] = {}, fN[3] = {}, fh[3] = {};
@@ -103,8 +108,10 @@ template <bool Viscous, bool Hourglass, class L, class Load>
                 for (std::size_t c = 0; c < 3; ++c)
                     predicted +=
                         y[r] * (load(in.F[3 * r + c] + a) + load(in.F[3 * r + c] + b)) * Y[c];
-            const L pairWeight =
+            L pairWeight =
                 0.5 * (load(in.V + a) + load(in.V + b)) * st.W[static_cast<std::size_t>(k)];
+            if constexpr (Hourglass == kSecantHourglass)
+                pairWeight *= 0.5 * (load(in.hourglassScale + a) + load(in.hourglassScale + b));
             const L kappa =
                 hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, x2,
                                             Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], pairWeight);
@@ -119,7 +126,7 @@ template <bool Viscous, bool Hourglass, class L, class Load>
 
 // The force of particle c from its pair sums: f_c = fStress − (N_c Σqw + Σ q N_b w)
 // + f_hourglass, fStress = K_c Σw + Σ K_b w (DESIGN §4).
-template <bool Viscous, bool Hourglass>
+template <bool Viscous, int Hourglass>
 void finishParticle(const StressFactors& sf, Index c, const Vec3& fStress, const Vec3& sumQW,
                     const Vec3& fN, const Vec3& fh, std::vector<Vec3>& force, ForceParts& parts) {
     const auto ic = static_cast<std::size_t>(c);
@@ -138,7 +145,7 @@ void finishParticle(const StressFactors& sf, Index c, const Vec3& fStress, const
 
 // The strips of a block (functions, not lambdas: a lambda is not always inlined into the wide
 // target).
-template <bool Viscous, bool Hourglass, class L, class Load>
+template <bool Viscous, int Hourglass, class L, class Load>
 [[gnu::always_inline]] inline void blockStrips(const ForceView& in, const Stencil& st,
                                                const Load& load, const ParticleBlock& block,
                                                BlockSums& s) {
@@ -155,7 +162,7 @@ template <bool Viscous, bool Hourglass, class L, class Load>
 // A stencil block strip by strip (strip type L; a block with stride > 1 gathers); the last strip of
 // a block whose length is not a multiple of the width overlaps the one before and recomputes
 // (identically) a few particles.
-template <bool Viscous, bool Hourglass, class L>
+template <bool Viscous, int Hourglass, class L>
 [[gnu::always_inline]] inline void stencilBlockForce(const ForceView& in, const StressFactors& sf,
                                                      const Stencil& st, const ParticleBlock& block,
                                                      std::vector<Vec3>& force, ForceParts& parts) {
@@ -177,20 +184,20 @@ template <bool Viscous, bool Hourglass, class L>
     }
 }
 
-template <bool Viscous, bool Hourglass>
+template <bool Viscous, int Hourglass>
 void portableBlockForce(const ForceView& in, const StressFactors& sf, const Stencil& st,
                         const ParticleBlock& block, std::vector<Vec3>& force, ForceParts& parts) {
     stencilBlockForce<Viscous, Hourglass, Lanes2>(in, sf, st, block, force, parts);
 }
 
-template <bool Viscous, bool Hourglass>
+template <bool Viscous, int Hourglass>
 GSPH_AVX2_TARGET void avx2BlockForce(const ForceView& in, const StressFactors& sf,
                                      const Stencil& st, const ParticleBlock& block,
                                      std::vector<Vec3>& force, ForceParts& parts) {
     stencilBlockForce<Viscous, Hourglass, Lanes4>(in, sf, st, block, force, parts);
 }
 
-template <bool Viscous, bool Hourglass>
+template <bool Viscous, int Hourglass>
 GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactors& sf,
                                          const Stencil& st, const ParticleBlock& block,
                                          std::vector<Vec3>& force, ForceParts& parts) {
@@ -201,7 +208,7 @@ GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactor
 // Pair weights carry the interface corrections (overset/interface_weights.hpp) of particles
 // that keep all their bonds: c's own on its pairs, b's on the transposed terms (the mirror's
 // for a same-space pair, b's own list entry for a pair across spaces).
-template <bool Viscous, bool Hourglass>
+template <bool Viscous, int Hourglass>
 void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleFields& pf,
                       const StressFactors& sf, const BondView& bonds, Index c,
                       std::vector<Vec3>& force, ForceParts& parts) {
@@ -238,7 +245,9 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
             if (!across) fN.noalias() += q * (sf.N[b] * e.gradW);
         }
         if constexpr (Hourglass) {
-            const double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
+            double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
+            if constexpr (Hourglass == kSecantHourglass)
+                weight *= 0.5 * (in.hourglassScale[ic] + in.hourglassScale[b]);
             const Vec3 pair =
                 hourglassPairForce(in.alphaE, Fc, pf.F[b], pf.X[b] - Xc, -xcb, weight);
             fh += across ? Vec3(0.5 * pair) : pair;  // across: half here, half on b (below)
@@ -266,7 +275,9 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
             fN.noalias() -= q * (sf.N[b] * e.gradW);
         }
         if constexpr (Hourglass) {
-            const double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
+            double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
+            if constexpr (Hourglass == kSecantHourglass)
+                weight *= 0.5 * (in.hourglassScale[ic] + in.hourglassScale[b]);
             fh -= 0.5 * hourglassPairForce(in.alphaE, pf.F[b], Fc, Xc - pf.X[b], -xbc, weight);
         }
     }
@@ -274,7 +285,7 @@ void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleF
     finishParticle<Viscous, Hourglass>(sf, c, fStress, sumQW, fN, fh, force, parts);
 }
 
-template <bool Viscous, bool Hourglass>
+template <bool Viscous, int Hourglass>
 void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
                const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
                std::vector<Vec3>& force, ForceParts& parts) {
@@ -314,20 +325,28 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
                        factors.soundSpeed.data(),
                        factors.density.data(),
                        factors.viscositySwitch.data(),
+                       factors.hourglassScale.data(),
                        ref.quadVolume.data(),
                        ref.pairs.table.data(),
                        options.viscosity,
                        options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();
     const bool hourglass = options.hourglass != 0.0;
-    if (viscous && hourglass)
-        forceLoop<true, true>(in, ref, fields, factors, blocks, bonds, force, parts);
-    else if (viscous)
-        forceLoop<true, false>(in, ref, fields, factors, blocks, bonds, force, parts);
-    else if (hourglass)
-        forceLoop<false, true>(in, ref, fields, factors, blocks, bonds, force, parts);
+    const bool secant = hourglass && options.hourglassModulus == HourglassModulus::Secant;
+    const auto loop = [&]<bool Viscous>() {
+        if (secant)
+            forceLoop<Viscous, kSecantHourglass>(in, ref, fields, factors, blocks, bonds, force,
+                                                 parts);
+        else if (hourglass)
+            forceLoop<Viscous, kElasticHourglass>(in, ref, fields, factors, blocks, bonds, force,
+                                                  parts);
+        else
+            forceLoop<Viscous, kNoHourglass>(in, ref, fields, factors, blocks, bonds, force, parts);
+    };
+    if (viscous)
+        loop.template operator()<true>();
     else
-        forceLoop<false, false>(in, ref, fields, factors, blocks, bonds, force, parts);
+        loop.template operator()<false>();
 }
 
 }  // namespace gsph

@@ -24,6 +24,7 @@
 #include "failure/brittle_bonds.hpp"
 #include "forces/artificial_viscosity.hpp"
 #include "forces/force_stage.hpp"  // ForceParts
+#include "forces/hourglass.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
 
@@ -37,12 +38,15 @@ struct StressFactors {
     std::vector<double> density;     ///< ρ0/J [kg/m³]
     /// α of the viscosity's compression switch (forces/artificial_viscosity.hpp; 1 when off)
     std::vector<double> viscositySwitch;
+    /// s_a of the hourglass penalty in plastic flow (forces/hourglass.hpp; 1 elastic)
+    std::vector<double> hourglassScale;
     void resize(std::size_t n) {
         K.resize(n);
         N.resize(n);
         soundSpeed.resize(n);
         density.resize(n);
         viscositySwitch.assign(n, 1.0);
+        hourglassScale.assign(n, 1.0);
     }
 };
 
@@ -65,6 +69,8 @@ struct ForceOptions {
     ViscosityCoefficients viscosity;
     double hourglass = 0.0;      ///< α (0 = off)
     double youngsModulus = 0.0;  ///< E of the body, scales the hourglass penalty [Pa]
+    /// E throughout, or × ½(s_a + s_b) of StressFactors::hourglassScale (forces/hourglass.hpp)
+    HourglassModulus hourglassModulus = HourglassModulus::Elastic;
 };
 
 /// f_c for the particles of one body, partitioned into `blocks` (built from ref.pairs).

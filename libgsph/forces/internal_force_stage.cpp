@@ -7,7 +7,7 @@ InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double>
                                        const ParticleFields& fields, const StressFactors& factors,
                                        const std::vector<StencilBlocks>& blocks,
                                        ViscosityCoefficients viscosity, double hourglass,
-                                       const BrittleBonds& bonds)
+                                       HourglassModulus modulus, const BrittleBonds& bonds)
     : ref_(ref),
       youngsModulus_(std::move(youngsModulus)),
       fields_(fields),
@@ -15,6 +15,7 @@ InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double>
       blocks_(blocks),
       viscosity_(viscosity),
       hourglass_(hourglass),
+      modulus_(modulus),
       bonds_(bonds) {}
 
 StageNeeds InternalForceStage::needs() const {
@@ -30,6 +31,7 @@ StageReport InternalForceStage::addForces(const State& state, ForceChannels& out
         options.viscosity = viscosity_;
         options.hourglass = hourglass_;
         options.youngsModulus = youngsModulus_[b];
+        options.hourglassModulus = modulus_;
         internalForce(ref_, fields_, factors_, blocks_[b], options, out.force, out.parts,
                       bonds_.view(state), bonds_.G().data());
     }

@@ -21,11 +21,11 @@ class InternalForceStage final : public ForceStage {
   public:
     /// Reads `fields`, `factors`, `blocks` (one per body) and the bonds at every evaluation;
     /// they must outlive the stage. `youngsModulus`: E per body, as `blocks` (scales the
-    /// hourglass penalty) [Pa].
+    /// hourglass penalty) [Pa]; `modulus`: the penalty's in plastic flow (forces/hourglass.hpp).
     InternalForceStage(const Reference& ref, std::vector<double> youngsModulus,
                        const ParticleFields& fields, const StressFactors& factors,
                        const std::vector<StencilBlocks>& blocks, ViscosityCoefficients viscosity,
-                       double hourglass, const BrittleBonds& bonds);
+                       double hourglass, HourglassModulus modulus, const BrittleBonds& bonds);
 
     std::string name() const override { return "internal force"; }
     StageNeeds needs() const override;
@@ -39,6 +39,7 @@ class InternalForceStage final : public ForceStage {
     const std::vector<StencilBlocks>& blocks_;
     ViscosityCoefficients viscosity_;
     double hourglass_;
+    HourglassModulus modulus_;
     const BrittleBonds& bonds_;
 };
 

@@ -8,7 +8,9 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "forces/hourglass.hpp"
 #include "kinematics/deformation_gradient.hpp"
+#include "materials/stress_measures.hpp"
 #include "particles/axisymmetry.hpp"
 
 namespace gsph {
@@ -43,12 +45,23 @@ struct KinematicsStep {
     const BrittleBonds& bonds;
     const Mat3* G;  // per particle: the reference's, or recomputed over surviving bonds
     const ViscosityCoefficients& viscosity;
+    bool plasticHourglass;  // s_a of forces/hourglass.hpp from the plastic strain (else 1)
 };
 
 // The viscosity's compression switch from the step's tr D (0: at rest, detached).
 void storeSwitch(KinematicsStep& s, std::size_t ia, double trD) {
     s.factors.viscositySwitch[ia] =
         viscositySwitch(s.viscosity, s.ref.smoothingLength[ia], trD, s.factors.soundSpeed[ia]);
+}
+
+// s_a of the hourglass penalty (forces/hourglass.hpp) from σ and ε̄p at t_{n+1}.
+template <class Model>
+void storeHourglassScale(const Model& model, KinematicsStep& s, std::size_t ia, const Mat3& cauchy,
+                         double plasticStrain) {
+    s.factors.hourglassScale[ia] =
+        s.plasticHourglass && plasticStrain > 0.0
+            ? hourglassPlasticScale(vonMises(cauchy), model.elastic().shearModulus(), plasticStrain)
+            : 1.0;
 }
 
 // The factors the force loop reads, from F and σ at t_{n+1}:
@@ -115,6 +128,7 @@ void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3&
     }
     storeFactors(model, s, ia, F, point);
     storeSwitch(s, ia, L.trace());
+    storeHourglassScale(model, s, ia, point.cauchy, point.plasticStrain);
 }
 
 // A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
@@ -141,6 +155,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     s.factors.soundSpeed[ia] = model.waveSpeed(point);
     s.fields.F.set(ia, s.state.F[ia]);
     storeSwitch(s, ia, 0.0);
+    storeHourglassScale(model, s, ia, point.cauchy, point.plasticStrain);
     s.lengthScale[ia] = s.ref.spacing[ia];
     s.failure[ia] = 0;
     if (!s.damageDissipation.empty()) s.damageDissipation[ia] = 0.0;
@@ -162,6 +177,9 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
             point.cauchy = s.state.cauchy[ia];
             storeFactors(model, s, ia, s.state.F[ia], point);
             storeSwitch(s, ia, 0.0);
+            // A restart resumes with the scale its plastic strain gives.
+            if (!s.state.plasticStrain.empty())
+                storeHourglassScale(model, s, ia, point.cauchy, s.state.plasticStrain[ia]);
         }
     } else if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
         BlockThetaGradients g;
@@ -187,8 +205,9 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
 }  // namespace
 
 StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& bodies,
-                           const BrittleBonds& bonds, const ViscosityCoefficients& viscosity)
-    : ref_(ref), bodies_(bodies), bonds_(bonds), viscosity_(viscosity) {
+                           const BrittleBonds& bonds, const ViscosityCoefficients& viscosity,
+                           HourglassModulus hourglass)
+    : ref_(ref), bodies_(bodies), bonds_(bonds), viscosity_(viscosity), hourglass_(hourglass) {
     const auto n = static_cast<std::size_t>(ref.size());
     factors_.resize(n);
     fields_.resize(n);
@@ -226,7 +245,8 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      ref_.dim.axisymmetric,
                      bonds_,
                      bonds_.G().data(),
-                     viscosity_};
+                     viscosity_,
+                     hourglass_ == HourglassModulus::Secant};
     // The nonlocal damage's averages of the drivers at t_n, before any particle updates its own.
     for (const NonlocalAverage& average : nonlocal_)
         if (!atRest && average.end() > average.begin())

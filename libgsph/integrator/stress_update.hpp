@@ -20,6 +20,7 @@
 
 #include "failure/brittle_bonds.hpp"
 #include "failure/nonlocal_damage.hpp"
+#include "forces/hourglass.hpp"
 #include "forces/internal_force.hpp"
 #include "integrator/body_range.hpp"
 #include "neighbors/stencil_blocks.hpp"
@@ -30,9 +31,11 @@ namespace gsph {
 
 class StressUpdate {
   public:
-    /// `bodies` and `bonds` must outlive it; `viscosity` sets the compression switch.
+    /// `bodies` and `bonds` must outlive it; `viscosity` sets the compression switch,
+    /// `hourglass` how plastic flow scales the hourglass penalty (forces/hourglass.hpp).
     StressUpdate(const Reference& ref, const std::vector<BodyRange>& bodies,
-                 const BrittleBonds& bonds, const ViscosityCoefficients& viscosity = {});
+                 const BrittleBonds& bonds, const ViscosityCoefficients& viscosity = {},
+                 HourglassModulus hourglass = HourglassModulus::Elastic);
 
     /// SoA copies of x_a and v_a for the stencil loops.
     void pack(const State& state, Index a) {
@@ -62,6 +65,7 @@ class StressUpdate {
     const std::vector<BodyRange>& bodies_;
     const BrittleBonds& bonds_;
     ViscosityCoefficients viscosity_;
+    HourglassModulus hourglass_;
     StressFactors factors_;
     ParticleFields fields_;
     std::vector<StencilBlocks> blocks_;

@@ -56,7 +56,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       bonds_(ref, byParticle(ref, options_.bondStretch, 0.0),
              byParticle(ref, options_.failedBonds, FailedBondRule::Keep),
              !options_.precracks.empty()),
-      stress_(ref, bodies_, bonds_, options_.viscosity) {
+      stress_(ref, bodies_, bonds_, options_.viscosity, options_.hourglassModulus) {
     checkOptions(options_);
     checkConstraints(constraints_, ref);
     const auto n = static_cast<std::size_t>(ref.size());
@@ -70,7 +70,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     }
     stages_.push_back(std::make_shared<InternalForceStage>(
         ref, std::move(youngsModulus), stress_.fields(), stress_.factors(), stress_.blocks(),
-        options_.viscosity, options_.hourglass, bonds_));
+        options_.viscosity, options_.hourglass, options_.hourglassModulus, bonds_));
     if (ref.dim.axisymmetric) stages_.push_back(std::make_shared<HoopStressStage>(ref));
     for (auto& stage :
          makeContactStages(ref, pWaveSpeed2, bodies_.size(), options_.contact, std::move(walls)))

@@ -48,7 +48,9 @@ struct SolverOptions {
     double cfl = 0.3;                 ///< Courant number of the time step
     ViscosityCoefficients viscosity;  ///< β1, β2 (paper: Monaghan)
     double hourglass = 0.0;           ///< α of forces/hourglass.hpp (0 = off)
-    double fixedTimeStep = 0.0;       ///< > 0: use this Δt instead of the CFL estimate
+    /// The hourglass penalty's modulus in plastic flow (forces/hourglass.hpp)
+    HourglassModulus hourglassModulus = HourglassModulus::Elastic;
+    double fixedTimeStep = 0.0;  ///< > 0: use this Δt instead of the CFL estimate
     /// εmax of brittle bonds per body id (failure/brittle_bonds.hpp); a body without an entry,
     /// or with 0, never breaks.
     std::vector<double> bondStretch;
