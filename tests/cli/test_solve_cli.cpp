@@ -76,6 +76,8 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"unknown_mass_basis.toml", "'mass' in [run] must be \"quadrature\" or \"mesh\"", 4},
         {"unknown_dimension.toml",
          "'dimension' in [run] must be \"3d\", \"plane_strain\" or \"axisymmetric\"", 4},
+        {"unknown_hourglass_modulus.toml",
+         "'hourglass_modulus' in [run] must be \"elastic\" or \"secant\", got 'plastic'", 4},
         {"dimension_of_another_file.toml",
          "[run] dimension = \"axisymmetric\" needs a 2-D particle file, and ", 4},
         {"unknown_table.toml", "unknown table 'walls'", 15},
