@@ -73,6 +73,8 @@ TEST(TaylorValidation, AxisymmetricSectionAndOgridAgreeOnLengthAndFootprint) {
 // The converged reference of docs/validation.md ("Taylor bar, axisymmetric"): the graded
 // sections' refinement series, copper at 190 m/s.
 constexpr double kConvergedLength = 17.392, kConvergedFootprint = 14.777;  // [mm]
+// The same for Weldox 460E at 300 m/s (cases/taylor_bar/weldox_300.toml).
+constexpr double kWeldoxLength = 18.481, kWeldoxFootprint = 13.203;  // [mm]
 
 // cases/taylor_bar_axisymmetric/case.toml with its line `key = ...` replaced by `line`, in `dir`.
 fs::path axisymmetricCaseWith(const fs::path& dir, const std::string& key,
@@ -137,6 +139,22 @@ TEST(TaylorValidation, GradedOgridWithinThreePercentOfTheConvergedFootprint) {
         100 * (shape.footprint / kConvergedFootprint - 1), kConvergedLength, kConvergedFootprint);
     EXPECT_NEAR(shape.footprint / kConvergedFootprint, 1.0, 0.03);
     EXPECT_NEAR(shape.length / kConvergedLength, 1.0, 0.01);
+}
+
+// The same O-grid, Weldox 460E at 300 m/s: footprint within 3 % (measured −1.98 %), length
+// within 1 % (−0.34 %) of its converged reference.
+TEST(TaylorValidation, WeldoxOnTheGradedOgridWithinThreePercentOfTheConvergedFootprint) {
+    test::TempDir dir;
+    const Shape shape = runTaylor(dir.path(), "geometries/taylor_bar.geo",
+                                  "--set n=8 --set nr=4 --set nz=50 --set grading=1.06",
+                                  "cases/taylor_bar/weldox_300.toml");
+    std::printf(
+        "[taylor] Weldox on the O-grid graded towards the face (9600 particles): length %.3f mm "
+        "(%+.2f %%), footprint %.3f mm (%+.2f %%) against the converged %.3f / %.3f mm\n",
+        shape.length, 100 * (shape.length / kWeldoxLength - 1), shape.footprint,
+        100 * (shape.footprint / kWeldoxFootprint - 1), kWeldoxLength, kWeldoxFootprint);
+    EXPECT_NEAR(shape.footprint / kWeldoxFootprint, 1.0, 0.03);
+    EXPECT_NEAR(shape.length / kWeldoxLength, 1.0, 0.01);
 }
 
 }  // namespace
