@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "contact/penalty_contact.hpp"
 #include "core/types.hpp"
 #include "forces/artificial_viscosity.hpp"
 #include "forces/hourglass.hpp"
@@ -84,14 +85,6 @@ struct ProbeSpec {
     int line = 0;
 };
 
-/// [contact]: the penalty law of libgsph/contact/penalty_contact.hpp.
-struct ContactSpec {
-    bool betweenBodies = true;
-    bool selfContact = false;  ///< the parts of one body separated by broken bonds
-    double penalty = 4.0;      ///< s
-    double distance = 1.0;     ///< δ
-};
-
 struct CaseConfig {
     std::filesystem::path caseFile;
     std::filesystem::path particles;  ///< resolved against the case file's folder
@@ -119,7 +112,7 @@ struct CaseConfig {
     /// A stable Δt below this fraction of the first Δt stops the run (0 = off).
     double minDtRatio = 1e-3;
     Vec3 gravity = Vec3::Zero();  ///< [run] gravity [m/s²]
-    ContactSpec contact;
+    ContactOptions contact;       ///< [contact]: the penalty law (contact/penalty_contact.hpp)
     std::vector<WallSpec> walls;
     std::vector<MaterialSpec> materials;
     std::vector<BodySpec> bodies;

@@ -401,8 +401,7 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
     for (const PrecrackSpec& p : c.precracks)
         solverOptions.precracks.push_back({p.corner, p.edge1, p.edge2});
     solverOptions.failedBonds = bodies.failedBonds;
-    solverOptions.contact = {c.contact.betweenBodies, c.contact.penalty, c.contact.distance,
-                             c.contact.selfContact};
+    solverOptions.contact = c.contact;
     Reference ref = buildReference(file, bodies.density, c.kappa);
     ref.massBasis = c.massBasis;
     if (!c.dimension.empty()) {
