@@ -53,7 +53,7 @@ Shape runTaylor(const fs::path& dir, const std::string& geometry, const std::str
 // The O-grid of scripts/validate's gsph-medium (8 cells per quarter of arc, 4 from the core to
 // the surface: about 8 across the radius; 40 layers, each 1.03 times the one below; 7680
 // particles) and the section of 8 cells across with the same layers (320): final length and
-// footprint agree within 1 % (measured −0.16 % and +0.31 %, O-grid against section).
+// footprint agree within 1 % (measured −0.15 % and +0.09 %, O-grid against section).
 TEST(TaylorValidation, AxisymmetricSectionAndOgridAgreeOnLengthAndFootprint) {
     test::TempDir ogrid, section;
     const Shape three = runTaylor(ogrid.path(), "geometries/taylor_bar.geo",
@@ -95,8 +95,8 @@ fs::path axisymmetricCaseWith(const fs::path& dir, const std::string& key,
 
 // The section graded towards the impact face (8 cells across, 50 along, each 1.06 times the one
 // below: 400 particles) against the converged reference: with the hourglass penalty's secant
-// modulus (the case's) its footprint is within 2.5 % (measured −2.25 %), with E throughout
-// it is 5.60 % short; the length within 1 % either way.
+// modulus (the case's) its footprint is within 2.5 % (measured −2.17 %), with E throughout
+// it is 5.54 % short; the length within 1 % either way.
 TEST(TaylorValidation, GradedSectionMeetsTheConvergedFootprintWithTheSecantHourglass) {
     test::TempDir secantDir, elasticDir;
     const std::string layout = "--set nr=8 --set nz=50 --set grading=1.06";
@@ -140,14 +140,14 @@ void expectGradedOgridNearReference(const std::string& metal, const std::string&
     EXPECT_NEAR(shape.length / length, 1.0, 0.01);
 }
 
-// Copper: measured −2.41 % (footprint), −0.69 % (length). With E as the hourglass modulus the
+// Copper: measured −2.32 % (footprint), −0.70 % (length). With E as the hourglass modulus the
 // lip-graded O-grids of this size were 6.5–7 % short (docs/theory.md).
 TEST(TaylorValidation, GradedOgridWithinThreePercentOfTheConvergedFootprint) {
     expectGradedOgridNearReference("copper", "cases/taylor_bar/case.toml", kConvergedLength,
                                    kConvergedFootprint);
 }
 
-// Weldox 460E at 300 m/s: measured −1.98 %, −0.34 %.
+// Weldox 460E at 300 m/s: measured −1.95 %, −0.35 %.
 TEST(TaylorValidation, WeldoxOnTheGradedOgridWithinThreePercentOfTheConvergedFootprint) {
     expectGradedOgridNearReference("Weldox 460E", "cases/taylor_bar/weldox_300.toml", kWeldoxLength,
                                    kWeldoxFootprint);
