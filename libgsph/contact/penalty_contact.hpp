@@ -39,7 +39,7 @@ struct ContactOptions {
     bool betweenBodies = true;  ///< penalty contact between particles of different bodies
     /// s: k_a = s m_a c_a²/ℓ_a², so that a particle on a contact spring alone oscillates at
     /// ω = √s c/ℓ (the lattice's own highest frequency is 2c/ℓ). 2: an elastic rebound keeps
-    /// 0.8 points more momentum than at 4, for a contact 0.2 % longer (docs/theory.md).
+    /// 0.8 points more momentum than at 4, for a contact 0.2–1 % longer (docs/theory.md).
     double penalty = 2.0;
     double distance = 1.0;  ///< δ: the contact ellipsoid is δ × the cell's inscribed one
     /// Contact between the parts of one body once broken bonds separate them (see above).
