@@ -45,16 +45,9 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.cfl = r.number("cfl", c.cfl, Sign::Positive);
     if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
     c.kappa = r.number("kappa", c.kappa, Sign::Positive);
-    const std::string mass = r.text("mass", "quadrature");
-    if (mass != "quadrature" && mass != "mesh")
-        r.fail("mass", "'mass' in [run] must be \"quadrature\" or \"mesh\", got '" + mass + "'");
+    const std::string mass = r.choice("mass", "quadrature", {"quadrature", "mesh"});
     c.massBasis = mass == "mesh" ? MassBasis::MeshVolume : MassBasis::QuadratureVolume;
-    c.dimension = r.text("dimension", "");
-    if (!c.dimension.empty() && c.dimension != "3d" && c.dimension != "plane_strain" &&
-        c.dimension != "axisymmetric")
-        r.fail("dimension",
-               "'dimension' in [run] must be \"3d\", \"plane_strain\" or \"axisymmetric\", got '" +
-                   c.dimension + "'");
+    c.dimension = r.choice("dimension", "", {"3d", "plane_strain", "axisymmetric"});
     c.dimensionLine = run->get("dimension")
                           ? static_cast<int>(run->get("dimension")->source().begin.line)
                           : r.line();
@@ -67,11 +60,7 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.viscosity.switchMach =
         r.number("viscosity_switch", c.viscosity.switchMach, Sign::NonNegative);
     c.hourglass = r.number("hourglass", c.hourglass, Sign::NonNegative);
-    const std::string modulus = r.text("hourglass_modulus", "elastic");
-    if (modulus != "secant" && modulus != "elastic")
-        r.fail("hourglass_modulus",
-               "'hourglass_modulus' in [run] must be \"elastic\" or \"secant\", got '" + modulus +
-                   "'");
+    const std::string modulus = r.choice("hourglass_modulus", "elastic", {"elastic", "secant"});
     c.hourglassModulus =
         modulus == "elastic" ? HourglassModulus::Elastic : HourglassModulus::Secant;
     c.checkpointInterval = r.number("checkpoint_interval", c.outputInterval, Sign::NonNegative);
@@ -103,10 +92,7 @@ WallSpec readWall(const std::string& file, const toml::table& t, std::size_t ind
     WallSpec w;
     w.line = r.line();
     w.name = r.text("name", "wall " + std::to_string(index));
-    const std::string shape = r.text("shape", "plane");
-    if (shape != "plane" && shape != "cylinder")
-        r.fail("shape",
-               "'shape' in [[wall]] must be \"plane\" or \"cylinder\", got '" + shape + "'");
+    const std::string shape = r.choice("shape", "plane", {"plane", "cylinder"});
     w.cylinder = shape == "cylinder";
     // The keys of the other shape are errors, not silently ignored.
     const std::vector<std::string> otherKeys = w.cylinder

@@ -106,6 +106,22 @@ class TomlKeys {
         return text(key, std::string());
     }
 
+    /// One of `choices` (a string, as text()); `fallback` when the key is absent.
+    std::string choice(const std::string& key, const std::string& fallback,
+                       const std::vector<std::string>& choices) const {
+        if (!has(key)) return fallback;
+        const std::string v = text(key, fallback);
+        for (const std::string& c : choices)
+            if (v == c) return v;
+        std::string list;
+        for (std::size_t i = 0; i < choices.size(); ++i)
+            list += (i == 0                    ? ""
+                     : i + 1 == choices.size() ? " or "
+                                               : ", ") +
+                    ("\"" + choices[i] + "\"");
+        fail(key, "'" + key + "' in " + where_ + " must be " + list + ", got '" + v + "'");
+    }
+
     bool flag(const std::string& key, bool fallback) const {
         const toml::node* n = table_.get(key);
         if (!n) return fallback;
