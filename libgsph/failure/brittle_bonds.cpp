@@ -163,6 +163,7 @@ void BrittleBonds::attach(const State& state) {
         throw InputError("state has " + std::to_string(state.bondIntact.size()) +
                          " bond flags for " + std::to_string(ref_.pairs.pairs()) + " pairs");
     parallelFor(ref_.size(), [&](Index a) { refreshParticle(state, a); });
+    anyDamaged_ = std::find(damaged_.begin(), damaged_.end(), 1) != damaged_.end();
     // Cut: the next call tries every failed particle again (the bonds it cut are broken
     // already, the others stay), so a resumed run cuts exactly what the uninterrupted one does.
     std::fill(failedSeen_.begin(), failedSeen_.end(), std::uint8_t{0});
@@ -286,6 +287,7 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
         refreshParticle(state, a);
         released_[ia] = 0.5 * state.dt * (released_[ia] - internalPower(state, a));
     });
+    anyDamaged_ = true;  // the particles of the fresh pairs are
     result.releasedEnergy = deterministicSum(
         ref_.size(), 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; },
         partialSums_);
@@ -294,7 +296,7 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
 
 BondView BrittleBonds::view(const State& state) const {
     if (!enabled_) return {};
-    return {state.bondIntact.data(), damaged_.data()};
+    return {state.bondIntact.data(), damaged_.data(), anyDamaged_};
 }
 
 }  // namespace gsph

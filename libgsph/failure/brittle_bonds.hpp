@@ -121,6 +121,7 @@ Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patc
 struct BondView {
     const std::uint8_t* intact = nullptr;   ///< per CSR pair: 1 holds, 0 broken
     const std::uint8_t* damaged = nullptr;  ///< per particle: 1 if any of its bonds broke
+    bool anyDamaged = false;                ///< some particle has a broken bond
     /// True when every particle of [begin, end) keeps all its bonds (stencil path allowed).
     bool allIntact(Index begin, Index end) const {
         if (damaged == nullptr) return true;
@@ -196,6 +197,7 @@ class BrittleBonds {
     bool enabled_ = false;
     std::vector<Mat3> G_;
     std::vector<std::uint8_t> damaged_, detached_;
+    bool anyDamaged_ = false;               ///< some entry of damaged_ is 1
     std::vector<Index> changed_;            ///< per particle: bonds broken by the current call
     std::vector<double> released_;          ///< per particle: its share of the released energy
     std::vector<double> partialSums_;       ///< scratch of deterministicSum

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstring>
 
 #include "core/lanes.hpp"
 #include "core/parallel.hpp"
@@ -26,6 +27,7 @@ struct ForceView {
     std::array<const double*, 3> x, v, X;
     const double *h, *c, *rho, *alpha, *hourglassScale, *V;
     const KernelEntry* table;
+    const CsrPairWeights* staged;  // null: stage every CSR particle's pairs each time
     ViscosityCoefficients viscosity;
     double alphaE;  // α E of the hourglass penalty [Pa]
 };
@@ -204,91 +206,289 @@ GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactor
     stencilBlockForce<Viscous, Hourglass, Lanes8>(in, sf, st, block, force, parts);
 }
 
-// The general path: particle c over its CSR list, the same pair formulas one pair at a time.
-// Pair weights carry the interface corrections (overset/interface_weights.hpp) of particles
-// that keep all their bonds: c's own on its pairs, b's on the transposed terms (the mirror's
-// for a same-space pair, b's own list entry for a pair across spaces).
-template <bool Viscous, int Hourglass>
-void csrParticleForce(const ForceView& in, const Reference& ref, const ParticleFields& pf,
-                      const StressFactors& sf, const BondView& bonds, Index c,
-                      std::vector<Vec3>& force, ForceParts& parts) {
+// The general path: particle c over its CSR list, vectorised across its pairs. A scalar pass
+// stages the pairs that hold (own list, then the pairs across spaces whose transposed term
+// comes from the other side's list) as SoA weights, each term's weight signed and zero where
+// the term is absent; a vector pass then runs the pair formulas across the staged pairs,
+// gathering the neighbours' fields. The sums run in eight fixed lanes (pair j of the staged
+// list adds into lane j mod 8) reduced in a fixed order at the end, whatever the strip width,
+// so the result is the same for every width. A sum starts at +0 and so never becomes −0: adding
+// a zero term (absent, or a lane past the list's end) leaves it unchanged bit for bit.
+//
+// Weights (DESIGN §4, §6): sumW takes w_cb (with c's interface corrections when c keeps all
+// its bonds); fK takes K_b wT, wT = w_cb − (the mirror's correction) for a same-space pair
+// (0 across spaces), −(w_bc + b's correction) for a pair of b's list across spaces; fN takes
+// q N_b gN (gN = ∇W_cb same-space, 0 across, −w_bc from b's list); sumQW takes q gQ (own list
+// only); the hourglass force −κ y (y = x_b − x_c) counts in full within a space and half
+// across (the other half on b's side).
+inline constexpr int kPairLanes = 8;
+
+// Staged pairs of c: what its list and the cross lists hold, padded to a multiple of kPairLanes.
+inline Index stagedCount(const Reference& ref, const BondView& bonds, Index c) {
     const PairList& P = ref.pairs;
     const auto ic = static_cast<std::size_t>(c);
-    Vec3 sumW = Vec3::Zero(), fK = Vec3::Zero(), sumQW = Vec3::Zero(), fN = Vec3::Zero();
-    Vec3 fh = Vec3::Zero();
-    const Vec3 xc = pf.x[ic], vc = pf.v[ic], Xc = pf.X[ic];
-    const Mat3 Fc = pf.F[ic];
+    Index n = 0;
+    for (Index k = P.begin(c); k < P.end(c); ++k) n += bonds.holds(k) ? 1 : 0;
+    if (!ref.crossOffset.empty())
+        for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot)
+            n += bonds.holds(ref.crossPair[static_cast<std::size_t>(slot)]) ? 1 : 0;
+    return (n + kPairLanes - 1) / kPairLanes * kPairLanes;
+}
+
+// Stages particle c's pairs (scalar) into st from entry `begin`; returns the padded count.
+inline Index stagePairs(const KernelEntry* table, const Reference& ref, const BondView& bonds,
+                        Index c, StagedPairs& st, std::size_t begin) {
+    const PairList& P = ref.pairs;
+    const auto ic = static_cast<std::size_t>(c);
+    const std::size_t m = st.stride;
+    std::size_t i = begin;
+    const auto put = [&](Index b, const Vec3& own, const Vec3& wT, const Vec3& gQ, const Vec3& gN,
+                         double W, double share, double valid) {
+        st.b[i] = b, st.W[i] = W, st.share[i] = share, st.valid[i] = valid;
+        for (std::size_t r = 0; r < 3; ++r) {
+            const auto e = static_cast<Eigen::Index>(r);
+            st.wOwn[r * m + i] = own[e], st.wT[r * m + i] = wT[e];
+            st.gQ[r * m + i] = gQ[e], st.gN[r * m + i] = gN[e];
+        }
+        ++i;
+    };
     const Vec3* own = bonds.keepsAll(c) ? ref.pairCorrections(c) : nullptr;
     const Vec3* mirror = ref.mirrorCorrections(c);
+    const Vec3 zero = Vec3::Zero();
     for (Index k = P.begin(c); k < P.end(c); ++k) {
         if (!bonds.holds(k)) continue;
-        const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
-        const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];
-        // A pair across spaces has no mirror: its transposed term comes from b's list below.
-        const bool across = ref.space[b] != ref.space[ic];
-        const std::size_t slot = static_cast<std::size_t>(k - P.begin(c));
-        sumW += own != nullptr ? Vec3(e.gradW + own[slot]) : e.gradW;
-        if (!across) {
+        const Index b = P.neighbor[static_cast<std::size_t>(k)];
+        const KernelEntry& e = table[P.kernelId[static_cast<std::size_t>(k)]];
+        const auto slot = static_cast<std::size_t>(k - P.begin(c));
+        const Vec3 w = own != nullptr ? Vec3(e.gradW + own[slot]) : e.gradW;
+        if (ref.space[static_cast<std::size_t>(b)] != ref.space[ic]) {
+            put(b, w, zero, e.gradW, zero, e.W, 0.5, 1.0);
+        } else {
             // −K_b w_bc with w_bc = −w_cb + (the mirror's correction)
-            if (mirror != nullptr && bonds.keepsAll(static_cast<Index>(b)))
-                fK.noalias() += sf.K[b] * (e.gradW - mirror[slot]);
-            else
-                fK.noalias() += sf.K[b] * e.gradW;
-        }
-        const Vec3 xcb = xc - pf.x[b];
-        if constexpr (Viscous) {
-            const double q = viscousPairPressure(
-                in.viscosity, (vc - pf.v[b]).dot(xcb), xcb.squaredNorm(),
-                0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
-                0.5 * (in.rho[ic] + in.rho[b]), 0.5 * (in.alpha[ic] + in.alpha[b]));
-            sumQW += q * e.gradW;
-            if (!across) fN.noalias() += q * (sf.N[b] * e.gradW);
-        }
-        if constexpr (Hourglass) {
-            double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
-            if constexpr (Hourglass == kSecantHourglass)
-                weight *= 0.5 * (in.hourglassScale[ic] + in.hourglassScale[b]);
-            const Vec3 pair =
-                hourglassPairForce(in.alphaE, Fc, pf.F[b], pf.X[b] - Xc, -xcb, weight);
-            fh += across ? Vec3(0.5 * pair) : pair;  // across: half here, half on b (below)
+            const Vec3 wT =
+                mirror != nullptr && bonds.keepsAll(b) ? Vec3(e.gradW - mirror[slot]) : e.gradW;
+            put(b, w, wT, e.gradW, e.gradW, e.W, 1.0, 1.0);
         }
     }
-    // Transposed terms of the pairs (b, c) across spaces that b's list holds (DESIGN §4, §6).
-    for (Index slot = ref.crossOffset.empty() ? 0 : ref.crossOffset[ic];
-         !ref.crossOffset.empty() && slot < ref.crossOffset[ic + 1]; ++slot) {
-        const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
-        if (!bonds.holds(k)) continue;
-        const Index owner = ref.crossOwner[static_cast<std::size_t>(slot)];
-        const auto b = static_cast<std::size_t>(owner);
-        const KernelEntry& e = in.table[P.kernelId[static_cast<std::size_t>(k)]];  // w_bc
-        const Vec3* ownerCorrection = bonds.keepsAll(owner) ? ref.pairCorrections(owner) : nullptr;
-        if (ownerCorrection != nullptr)
-            fK.noalias() -= sf.K[b] * (e.gradW + ownerCorrection[k - P.begin(owner)]);
-        else
-            fK.noalias() -= sf.K[b] * e.gradW;
-        const Vec3 xbc = pf.x[b] - xc;
-        if constexpr (Viscous) {
-            const double q = viscousPairPressure(
-                in.viscosity, (pf.v[b] - vc).dot(xbc), xbc.squaredNorm(),
-                0.5 * (in.h[ic] + in.h[b]), 0.5 * (in.c[ic] + in.c[b]),
-                0.5 * (in.rho[ic] + in.rho[b]), 0.5 * (in.alpha[ic] + in.alpha[b]));
-            fN.noalias() -= q * (sf.N[b] * e.gradW);
+    if (!ref.crossOffset.empty())
+        for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot) {
+            const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
+            if (!bonds.holds(k)) continue;
+            const Index owner = ref.crossOwner[static_cast<std::size_t>(slot)];
+            const KernelEntry& e = table[P.kernelId[static_cast<std::size_t>(k)]];  // w_bc
+            const Vec3* ownerCorrection =
+                bonds.keepsAll(owner) ? ref.pairCorrections(owner) : nullptr;
+            const Vec3 w = ownerCorrection != nullptr
+                               ? Vec3(e.gradW + ownerCorrection[k - P.begin(owner)])
+                               : e.gradW;
+            put(owner, zero, -w, zero, -e.gradW, e.W, 0.5, 1.0);
         }
-        if constexpr (Hourglass) {
-            double weight = 0.5 * (in.V[ic] + in.V[b]) * e.W;
-            if constexpr (Hourglass == kSecantHourglass)
-                weight *= 0.5 * (in.hourglassScale[ic] + in.hourglassScale[b]);
-            fh -= 0.5 * hourglassPairForce(in.alphaE, pf.F[b], Fc, Xc - pf.X[b], -xbc, weight);
-        }
+    const std::size_t padded =
+        begin + static_cast<std::size_t>((i - begin + kPairLanes - 1) / kPairLanes * kPairLanes);
+    while (i < padded) put(c, zero, zero, zero, zero, 0.0, 0.0, 0.0);
+    return static_cast<Index>(padded - begin);
+}
+
+// The lanes of p[index[0]], p[index[1]], ... (a gather). With 4 or 8 lanes the hardware's
+// gather instruction, as an asm statement: the intrinsics cannot be inlined into these templates
+// (they are compiled for the default target and inlined into the wide ones), an asm statement
+// can. The fields it reads are not written during the force pass.
+template <class L>
+[[gnu::always_inline]] inline L gatherAt(const double* p, const Index* index) {
+#if defined(__x86_64__)
+    if constexpr (kLanesOf<L> == 8) {
+        typedef Index Index8 __attribute__((vector_size(32)));
+        Index8 i;
+        std::memcpy(&i, index, sizeof i);
+        L v;
+        asm("kxnorw %%k1, %%k1, %%k1\n\tvgatherdpd (%1,%2,8), %0%{%%k1%}"
+            : "=&v"(v)
+            : "r"(p), "v"(i)
+            : "k1");
+        return v;
+    } else if constexpr (kLanesOf<L> == 4) {
+        typedef Index Index4 __attribute__((vector_size(16)));
+        Index4 i;
+        std::memcpy(&i, index, sizeof i);
+        L v, mask;
+        asm("vpcmpeqd %1, %1, %1\n\tvgatherdpd %1, (%2,%3,8), %0"
+            : "=&x"(v), "=&x"(mask)
+            : "r"(p), "x"(i));
+        return v;
     }
-    const Vec3 fStress = sf.K[ic] * sumW + fK;
-    finishParticle<Viscous, Hourglass>(sf, c, fStress, sumQW, fN, fh, force, parts);
+#endif
+    L v;
+    for (int j = 0; j < kLanesOf<L>; ++j) v[j] = p[index[j]];
+    return v;
+}
+
+// Mask type of strip type L (what a comparison of two L yields).
+template <class L>
+using MaskOf = decltype(L{} < L{});
+
+// A 3×3 factor (row-major components) of the neighbours times w, row r:
+// (M_r0 w0 + M_r1 w1) + M_r2 w2.
+template <class L>
+[[gnu::always_inline]] inline void gatherTimes(const std::array<const double*, 9>& M,
+                                               const Index* b, const L (&w)[3], L (&out)[3]) {
+    for (std::size_t r = 0; r < 3; ++r)
+        out[r] = gatherAt<L>(M[3 * r], b) * w[0] + gatherAt<L>(M[3 * r + 1], b) * w[1] +
+                 gatherAt<L>(M[3 * r + 2], b) * w[2];
+}
+
+// Per-particle sums of the CSR path, in kPairLanes lanes held as kPairLanes / width strips.
+template <class L>
+struct PairLaneSums {
+    static constexpr int kStrips = kPairLanes / kLanesOf<L>;
+    L sumW[kStrips][3] = {}, fK[kStrips][3] = {}, sumQW[kStrips][3] = {}, fN[kStrips][3] = {},
+      fh[kStrips][3] = {};
+    // Σ over the eight lanes in a fixed order: ((l0 + l4) + (l2 + l6)) + ((l1 + l5) + (l3 + l7)).
+    static Vec3 reduce(const L (&acc)[kStrips][3]) {
+        Vec3 out;
+        for (std::size_t r = 0; r < 3; ++r) {
+            double l[kPairLanes];
+            for (int u = 0; u < kStrips; ++u)
+                for (int j = 0; j < kLanesOf<L>; ++j) l[u * kLanesOf<L> + j] = acc[u][r][j];
+            out[static_cast<Eigen::Index>(r)] =
+                ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
+        }
+        return out;
+    }
+};
+
+template <bool Viscous, int Hourglass, class L>
+[[gnu::always_inline]] inline void csrParticleForce(const ForceView& in, const StressFactors& sf,
+                                                    const StagedPairs& st, std::size_t begin,
+                                                    Index size, Index c, std::vector<Vec3>& force,
+                                                    ForceParts& parts) {
+    constexpr int width = kLanesOf<L>;
+    using Sums = PairLaneSums<L>;
+    const std::size_t m = st.stride;
+    const auto ic = static_cast<std::size_t>(c);
+    const auto at = [ic](const double* p) { return L{} + p[ic]; };
+    L xc[3], vc[3], Xc[3], Fc[9];
+    for (std::size_t r = 0; r < 3; ++r)
+        xc[r] = at(in.x[r]), vc[r] = at(in.v[r]), Xc[r] = at(in.X[r]);
+    for (std::size_t rc = 0; rc < 9; ++rc) Fc[rc] = at(in.F[rc]);
+    const L hc = at(in.h), cc = at(in.c), rhoc = at(in.rho), alphac = at(in.alpha), Vc = at(in.V);
+    L sc{};
+    if constexpr (Hourglass == kSecantHourglass) sc = at(in.hourglassScale);
+    Sums s;
+    for (Index j0 = 0; j0 < size; j0 += kPairLanes)
+        for (int u = 0; u < Sums::kStrips; ++u) {
+            const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
+            const Index* b = st.b.data() + j;
+            const auto load3 = [&](const std::vector<double>& v, L(&out)[3])
+                __attribute__((always_inline)) {
+                for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * m + j);
+            };
+            L w[3];
+            load3(st.wOwn, w);
+            for (std::size_t r = 0; r < 3; ++r) s.sumW[u][r] += w[r];
+            load3(st.wT, w);
+            L Kw[3];
+            gatherTimes<L>(in.K, b, w, Kw);
+            for (std::size_t r = 0; r < 3; ++r) s.fK[u][r] += Kw[r];
+            L y[3];
+            for (std::size_t r = 0; r < 3; ++r) y[r] = gatherAt<L>(in.x[r], b) - xc[r];
+            const L y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+            if constexpr (Viscous) {
+                L vx{};
+                for (std::size_t r = 0; r < 3; ++r) vx += (vc[r] - gatherAt<L>(in.v[r], b)) * -y[r];
+                const L q = viscousPairPressure<L>(
+                    in.viscosity, vx, y2, 0.5 * (hc + gatherAt<L>(in.h, b)),
+                    0.5 * (cc + gatherAt<L>(in.c, b)), 0.5 * (rhoc + gatherAt<L>(in.rho, b)),
+                    0.5 * (alphac + gatherAt<L>(in.alpha, b)));
+                load3(st.gQ, w);
+                for (std::size_t r = 0; r < 3; ++r) s.sumQW[u][r] += q * w[r];
+                load3(st.gN, w);
+                L Nw[3];
+                gatherTimes<L>(in.N, b, w, Nw);
+                for (std::size_t r = 0; r < 3; ++r) s.fN[u][r] += q * Nw[r];
+            }
+            if constexpr (Hourglass) {
+                L Y[3];
+                for (std::size_t r = 0; r < 3; ++r) Y[r] = gatherAt<L>(in.X[r], b) - Xc[r];
+                L weight = 0.5 * (Vc + gatherAt<L>(in.V, b)) * loadLanes<L>(st.W.data() + j);
+                if constexpr (Hourglass == kSecantHourglass)
+                    weight *= 0.5 * (sc + gatherAt<L>(in.hourglassScale, b));
+                L predicted{};
+                for (std::size_t r = 0; r < 3; ++r) {
+                    L row{};
+                    for (std::size_t k = 0; k < 3; ++k)
+                        row += (Fc[3 * r + k] + gatherAt<L>(in.F[3 * r + k], b)) * Y[k];
+                    predicted += row * y[r];
+                }
+                const L kappa =
+                    hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, y2,
+                                                Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], weight);
+                // Padding lanes (b = c) give 0/0: selected away.
+                const MaskOf<L> valid = loadLanes<L>(st.valid.data() + j) != 0.0;
+                const L share = loadLanes<L>(st.share.data() + j);
+                for (std::size_t r = 0; r < 3; ++r)
+                    s.fh[u][r] = valid ? s.fh[u][r] + share * (-kappa * y[r]) : s.fh[u][r];
+            }
+        }
+    leaveLanes<L>();
+    const Vec3 fStress = sf.K[ic] * Sums::reduce(s.sumW) + Sums::reduce(s.fK);
+    finishParticle<Viscous, Hourglass>(sf, c, fStress, Sums::reduce(s.sumQW), Sums::reduce(s.fN),
+                                       Sums::reduce(s.fh), force, parts);
+}
+
+template <bool Viscous, int Hourglass, class L>
+[[gnu::always_inline]] inline void csrBlockForce(const ForceView& in, const Reference& ref,
+                                                 const StressFactors& sf, const BondView& bonds,
+                                                 const ParticleBlock& block,
+                                                 std::vector<Vec3>& force, ForceParts& parts) {
+    // Staged once when nothing is damaged (CsrPairWeights), else here, per particle.
+    thread_local StagedPairs scratch;
+    for (Index i = 0; i < block.size(); ++i) {
+        const Index c = block.particle(i);
+        if (in.staged != nullptr && !bonds.anyDamaged) {
+            const auto ic = static_cast<std::size_t>(c);
+            const std::size_t begin = in.staged->begin[ic];
+            csrParticleForce<Viscous, Hourglass, L>(
+                in, sf, in.staged->pairs, begin,
+                static_cast<Index>(in.staged->begin[ic + 1] - begin), c, force, parts);
+            continue;
+        }
+        const auto ic = static_cast<std::size_t>(c);
+        const auto need = static_cast<std::size_t>(
+            ref.pairs.end(c) - ref.pairs.begin(c) + kPairLanes +
+            (ref.crossOffset.empty() ? 0 : ref.crossOffset[ic + 1] - ref.crossOffset[ic]));
+        if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
+        const Index size = stagePairs(in.table, ref, bonds, c, scratch, 0);
+        csrParticleForce<Viscous, Hourglass, L>(in, sf, scratch, 0, size, c, force, parts);
+    }
 }
 
 template <bool Viscous, int Hourglass>
-void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& pf,
-               const StressFactors& sf, const StencilBlocks& blocks, const BondView& bonds,
-               std::vector<Vec3>& force, ForceParts& parts) {
+void portableCsrForce(const ForceView& in, const Reference& ref, const StressFactors& sf,
+                      const BondView& bonds, const ParticleBlock& block, std::vector<Vec3>& force,
+                      ForceParts& parts) {
+    csrBlockForce<Viscous, Hourglass, Lanes2>(in, ref, sf, bonds, block, force, parts);
+}
+
+template <bool Viscous, int Hourglass>
+GSPH_AVX2_TARGET void avx2CsrForce(const ForceView& in, const Reference& ref,
+                                   const StressFactors& sf, const BondView& bonds,
+                                   const ParticleBlock& block, std::vector<Vec3>& force,
+                                   ForceParts& parts) {
+    csrBlockForce<Viscous, Hourglass, Lanes4>(in, ref, sf, bonds, block, force, parts);
+}
+
+template <bool Viscous, int Hourglass>
+GSPH_AVX512_TARGET void avx512CsrForce(const ForceView& in, const Reference& ref,
+                                       const StressFactors& sf, const BondView& bonds,
+                                       const ParticleBlock& block, std::vector<Vec3>& force,
+                                       ForceParts& parts) {
+    csrBlockForce<Viscous, Hourglass, Lanes8>(in, ref, sf, bonds, block, force, parts);
+}
+
+template <bool Viscous, int Hourglass>
+void forceLoop(const ForceView& in, const Reference& ref, const StressFactors& sf,
+               const StencilBlocks& blocks, const BondView& bonds, std::vector<Vec3>& force,
+               ForceParts& parts) {
     const int width = laneWidth();
     parallelForBlocks(blocks.cost, [&](std::ptrdiff_t k) {
         const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
@@ -302,18 +502,49 @@ void forceLoop(const ForceView& in, const Reference& ref, const ParticleFields& 
                 portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
             return;
         }
-        for (Index i = 0; i < block.size(); ++i)
-            csrParticleForce<Viscous, Hourglass>(in, ref, pf, sf, bonds, block.particle(i), force,
-                                                 parts);
+        // A block of stencil particles with a broken bond takes the CSR path too (stride > 1
+        // included); ParticleBlock::particle walks it either way.
+        if (width >= 8)
+            avx512CsrForce<Viscous, Hourglass>(in, ref, sf, bonds, block, force, parts);
+        else if (width >= 4)
+            avx2CsrForce<Viscous, Hourglass>(in, ref, sf, bonds, block, force, parts);
+        else
+            portableCsrForce<Viscous, Hourglass>(in, ref, sf, bonds, block, force, parts);
     });
 }
 
 }  // namespace
 
+std::size_t CsrPairWeights::bytes() const {
+    return begin.size() * sizeof(std::size_t) +
+           pairs.stride * (sizeof(Index) + 13 * sizeof(double));
+}
+
+CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks) {
+    CsrPairWeights out;
+    const auto n = static_cast<std::size_t>(ref.size());
+    std::vector<Index> count(n, 0);
+    for (const ParticleBlock& block : blocks.blocks)
+        if (block.stencil == kNoStencil)
+            for (Index i = 0; i < block.size(); ++i)
+                count[static_cast<std::size_t>(block.particle(i))] =
+                    stagedCount(ref, BondView{}, block.particle(i));
+    out.begin.assign(n + 1, 0);
+    for (std::size_t a = 0; a < n; ++a)
+        out.begin[a + 1] = out.begin[a] + static_cast<std::size_t>(count[a]);
+    out.pairs.resize(out.begin[n]);
+    parallelFor(ref.size(), [&](Index a) {
+        if (count[static_cast<std::size_t>(a)] > 0)
+            stagePairs(ref.pairs.table.data(), ref, BondView{}, a, out.pairs,
+                       out.begin[static_cast<std::size_t>(a)]);
+    });
+    return out;
+}
+
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds,
-                   const Mat3* G) {
+                   const Mat3* G, const CsrPairWeights* staged) {
     const ForceView in{components(factors.K),
                        components(factors.N),
                        components(fields.F),
@@ -328,6 +559,7 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
                        factors.hourglassScale.data(),
                        ref.quadVolume.data(),
                        ref.pairs.table.data(),
+                       staged,
                        options.viscosity,
                        options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();
@@ -335,13 +567,11 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
     const bool secant = hourglass && options.hourglassModulus == HourglassModulus::Secant;
     const auto loop = [&]<bool Viscous>() {
         if (secant)
-            forceLoop<Viscous, kSecantHourglass>(in, ref, fields, factors, blocks, bonds, force,
-                                                 parts);
+            forceLoop<Viscous, kSecantHourglass>(in, ref, factors, blocks, bonds, force, parts);
         else if (hourglass)
-            forceLoop<Viscous, kElasticHourglass>(in, ref, fields, factors, blocks, bonds, force,
-                                                  parts);
+            forceLoop<Viscous, kElasticHourglass>(in, ref, factors, blocks, bonds, force, parts);
         else
-            forceLoop<Viscous, kNoHourglass>(in, ref, fields, factors, blocks, bonds, force, parts);
+            forceLoop<Viscous, kNoHourglass>(in, ref, factors, blocks, bonds, force, parts);
     };
     if (viscous)
         loop.template operator()<true>();

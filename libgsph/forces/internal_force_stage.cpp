@@ -16,7 +16,9 @@ InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double>
       viscosity_(viscosity),
       hourglass_(hourglass),
       modulus_(modulus),
-      bonds_(bonds) {}
+      bonds_(bonds) {
+    for (const StencilBlocks& body : blocks_) staged_.push_back(stageCsrPairs(ref_, body));
+}
 
 StageNeeds InternalForceStage::needs() const {
     StageNeeds needs;
@@ -33,7 +35,7 @@ StageReport InternalForceStage::addForces(const State& state, ForceChannels& out
         options.youngsModulus = youngsModulus_[b];
         options.hourglassModulus = modulus_;
         internalForce(ref_, fields_, factors_, blocks_[b], options, out.force, out.parts,
-                      bonds_.view(state), bonds_.G().data());
+                      bonds_.view(state), bonds_.G().data(), &staged_[b]);
     }
     return {};
 }

@@ -41,6 +41,7 @@ class InternalForceStage final : public ForceStage {
     double hourglass_;
     HourglassModulus modulus_;
     const BrittleBonds& bonds_;
+    std::vector<CsrPairWeights> staged_;  ///< per body, as blocks_
 };
 
 }  // namespace gsph

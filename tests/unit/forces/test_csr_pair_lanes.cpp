@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+// The CSR path of the internal force runs across each particle's pairs in SIMD lanes, from pairs
+// staged once (CsrPairWeights) or staged at each call: on two overset blocks (cross pairs,
+// interface corrections, mirrors) with every particle on the CSR path and random fields, both
+// give the same bits at every strip width, and both equal the pair formulas of DESIGN §4 summed
+// one pair at a time (written out here) to round-off.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstring>
+#include <random>
+
+#include "core/lanes.hpp"
+#include "forces/internal_force.hpp"
+#include "support/overset_fixtures.hpp"
+
+namespace gsph {
+namespace {
+
+struct Fixture {
+    testing::TwoBlocks t = testing::twoBlocks(3, 5, 2);
+    ParticleFields fields;
+    StressFactors factors;
+    StencilBlocks blocks;
+    ForceOptions options;
+
+    explicit Fixture(HourglassModulus modulus) {
+        Reference& ref = t.ref;
+        const auto n = static_cast<std::size_t>(ref.size());
+        ref.oversetCoupled.assign(n, 1);  // every particle on the CSR path
+        blocks = buildStencilBlocks(ref.pairs, 0, ref.size(), ref.oversetCoupled);
+        fields.resize(n);
+        factors.resize(n);
+        std::mt19937_64 random(7);
+        std::uniform_real_distribution<double> u(-1.0, 1.0);
+        const auto mat = [&](double scale) {
+            Mat3 m;
+            for (int i = 0; i < 9; ++i) m(i / 3, i % 3) = scale * u(random);
+            return m;
+        };
+        const double h = t.fine;
+        for (std::size_t a = 0; a < n; ++a) {
+            fields.X.set(a, ref.X[a]);
+            fields.x.set(a, Vec3(ref.X[a] + 0.2 * h * Vec3(u(random), u(random), u(random))));
+            fields.v.set(a, Vec3(50.0 * Vec3(u(random), u(random), u(random))));
+            fields.F.set(a, Mat3(Mat3::Identity() + mat(0.1)));
+            factors.K.set(a, mat(1e3));
+            factors.N.set(a, mat(1e-5));
+            factors.soundSpeed[a] = 5000.0 + 100.0 * u(random);
+            factors.density[a] = 7800.0 + 50.0 * u(random);
+            factors.viscositySwitch[a] = 0.5 + 0.5 * u(random);
+            factors.hourglassScale[a] = 0.6 + 0.4 * u(random);
+        }
+        options.viscosity = {1.0, 1.0, 0.01};
+        options.hourglass = 0.1;
+        options.youngsModulus = 200e9;
+        options.hourglassModulus = modulus;
+    }
+
+    std::vector<Vec3> force(const CsrPairWeights* staged, ForceParts& parts) const {
+        const auto n = static_cast<std::size_t>(t.ref.size());
+        std::vector<Vec3> f(n);
+        parts.viscous.assign(n, Vec3::Zero());
+        parts.hourglass.assign(n, Vec3::Zero());
+        internalForce(t.ref, fields, factors, blocks, options, f, parts, {}, nullptr, staged);
+        return f;
+    }
+
+    // The pair formulas one pair at a time, in list order (DESIGN §4, §6).
+    std::vector<Vec3> reference() const {
+        const Reference& ref = t.ref;
+        const PairList& P = ref.pairs;
+        const double alphaE = options.hourglass * options.youngsModulus;
+        const bool secant = options.hourglassModulus == HourglassModulus::Secant;
+        std::vector<Vec3> out(static_cast<std::size_t>(ref.size()));
+        const auto viscous = [&](std::size_t c, std::size_t b) {
+            const Vec3 xcb = fields.x[c] - fields.x[b];
+            return viscousPairPressure(
+                options.viscosity, (fields.v[c] - fields.v[b]).dot(xcb), xcb.squaredNorm(),
+                0.5 * (ref.smoothingLength[c] + ref.smoothingLength[b]),
+                0.5 * (factors.soundSpeed[c] + factors.soundSpeed[b]),
+                0.5 * (factors.density[c] + factors.density[b]),
+                0.5 * (factors.viscositySwitch[c] + factors.viscositySwitch[b]));
+        };
+        const auto hourglass = [&](std::size_t c, std::size_t b, double W) {
+            double weight = 0.5 * (ref.quadVolume[c] + ref.quadVolume[b]) * W;
+            if (secant) weight *= 0.5 * (factors.hourglassScale[c] + factors.hourglassScale[b]);
+            return hourglassPairForce(alphaE, fields.F[c], fields.F[b], ref.X[b] - ref.X[c],
+                                      fields.x[b] - fields.x[c], weight);
+        };
+        for (Index c = 0; c < ref.size(); ++c) {
+            const auto ic = static_cast<std::size_t>(c);
+            Vec3 sumW = Vec3::Zero(), fK = Vec3::Zero(), sumQW = Vec3::Zero(), fN = Vec3::Zero(),
+                 fh = Vec3::Zero();
+            const Vec3* own = ref.pairCorrections(c);
+            const Vec3* mirror = ref.mirrorCorrections(c);
+            for (Index k = P.begin(c); k < P.end(c); ++k) {
+                const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
+                const KernelEntry& e = P.table[P.kernelId[static_cast<std::size_t>(k)]];
+                const auto slot = static_cast<std::size_t>(k - P.begin(c));
+                const bool across = ref.space[b] != ref.space[ic];
+                sumW += own != nullptr ? Vec3(e.gradW + own[slot]) : e.gradW;
+                if (!across)
+                    fK +=
+                        factors.K[b] * (mirror != nullptr ? Vec3(e.gradW - mirror[slot]) : e.gradW);
+                const double q = viscous(ic, b);
+                sumQW += q * e.gradW;
+                if (!across) fN += q * (factors.N[b] * e.gradW);
+                fh += (across ? 0.5 : 1.0) * hourglass(ic, b, e.W);
+            }
+            for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot) {
+                const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
+                const Index owner = ref.crossOwner[static_cast<std::size_t>(slot)];
+                const auto b = static_cast<std::size_t>(owner);
+                const KernelEntry& e = P.table[P.kernelId[static_cast<std::size_t>(k)]];
+                const Vec3* correction = ref.pairCorrections(owner);
+                fK -= factors.K[b] * (correction != nullptr
+                                          ? Vec3(e.gradW + correction[k - P.begin(owner)])
+                                          : e.gradW);
+                fN -= viscous(ic, b) * (factors.N[b] * e.gradW);
+                fh += 0.5 * hourglass(ic, b, e.W);
+            }
+            out[ic] = factors.K[ic] * sumW + fK - (factors.N[ic] * sumQW + fN) + fh;
+        }
+        return out;
+    }
+};
+
+bool sameBits(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Vec3)) == 0;
+}
+
+class CsrPairLanes : public ::testing::TestWithParam<HourglassModulus> {};
+
+TEST_P(CsrPairLanes, StagedOnceOrEachCallAtEveryWidthGiveTheBitsOfThePairFormulas) {
+    const Fixture fx(GetParam());
+    ASSERT_FALSE(fx.t.ref.crossPair.empty());
+    ASSERT_FALSE(fx.t.ref.pairCorrection.empty());
+    const CsrPairWeights staged = stageCsrPairs(fx.t.ref, fx.blocks);
+    limitLanes(2);
+    ForceParts parts2;
+    const std::vector<Vec3> portable = fx.force(nullptr, parts2);
+    int widths = 1;
+    for (int width : {2, 4, 8}) {
+        limitLanes(width);
+        if (laneWidth() < width) continue;
+        widths += width > 2 ? 1 : 0;
+        for (const CsrPairWeights* s : {static_cast<const CsrPairWeights*>(nullptr), &staged}) {
+            ForceParts parts;
+            EXPECT_TRUE(sameBits(fx.force(s, parts), portable))
+                << width << " lanes, staged " << (s != nullptr ? "once" : "each call");
+            EXPECT_TRUE(sameBits(parts.viscous, parts2.viscous));
+            EXPECT_TRUE(sameBits(parts.hourglass, parts2.hourglass));
+        }
+    }
+    limitLanes(8);
+    std::printf("[csr lanes] %d particles, %zu cross pairs: bit-identical at %d strip widths\n",
+                fx.t.ref.size(), fx.t.ref.crossPair.size(), widths);
+    const std::vector<Vec3> plain = fx.reference();
+    double worst = 0.0, scale = 0.0;
+    for (std::size_t a = 0; a < plain.size(); ++a) {
+        worst = std::max(worst, (plain[a] - portable[a]).norm());
+        scale = std::max(scale, plain[a].norm());
+    }
+    std::printf("[csr lanes] against the pair formulas one pair at a time: %.1e of max |f|\n",
+                worst / scale);
+    EXPECT_GT(scale, 0.0);
+    EXPECT_LT(worst / scale, 3e-15);
+}
+
+INSTANTIATE_TEST_SUITE_P(HourglassModulus, CsrPairLanes,
+                         ::testing::Values(HourglassModulus::Elastic, HourglassModulus::Secant),
+                         [](const auto& param) {
+                             return param.param == HourglassModulus::Secant ? "Secant" : "Elastic";
+                         });
+
+}  // namespace
+}  // namespace gsph
