@@ -14,6 +14,7 @@
 // strip kernels and the one-pair-at-a-time CSR path alike.
 #pragma once
 
+#include <cstdint>
 #include <cstring>
 #include <type_traits>
 
@@ -93,6 +94,55 @@ struct StripLoad {
             return loadLanes<L>(p);
     }
 };
+
+/// The lanes p[index[0]], p[index[1]], ... (a gather). With 4 or 8 lanes the processor's gather
+/// instruction, from an asm statement: the intrinsics cannot be inlined into the generic
+/// templates that the wide targets inline, an asm statement can. The asm does not tell the
+/// compiler that it reads *p: call it only on arrays the loop does not write.
+template <class L>
+[[gnu::always_inline]] inline L gatherLanesAt(const double* p, const std::int32_t* index) {
+#if defined(__x86_64__)
+    if constexpr (kLanesOf<L> == 8) {
+        typedef std::int32_t Index8 __attribute__((vector_size(32)));
+        Index8 i;
+        std::memcpy(&i, index, sizeof i);
+        L v;
+        asm("kxnorw %%k1, %%k1, %%k1\n\tvgatherdpd (%1,%2,8), %0%{%%k1%}"
+            : "=&v"(v)
+            : "r"(p), "v"(i)
+            : "k1");
+        return v;
+    } else if constexpr (kLanesOf<L> == 4) {
+        typedef std::int32_t Index4 __attribute__((vector_size(16)));
+        Index4 i;
+        std::memcpy(&i, index, sizeof i);
+        L v, mask;
+        asm("vpcmpeqd %1, %1, %1\n\tvgatherdpd %1, (%2,%3,8), %0"
+            : "=&x"(v), "=&x"(mask)
+            : "r"(p), "x"(i));
+        return v;
+    }
+#endif
+    L v;
+    for (int j = 0; j < kLanesOf<L>; ++j) v[j] = p[index[j]];
+    return v;
+}
+
+/// The SIMD lanes of the pair loops that run across one particle's pairs (neighbors/
+/// staged_pairs.hpp): pair j adds into lane j mod kPairLanes whatever the strip width (a strip
+/// of width L holds kPairLanes / width such lanes), and the lanes are summed in one fixed
+/// order, so every width gives the same bits.
+inline constexpr int kPairLanes = 8;
+
+/// Σ of the kPairLanes lanes held in `acc` (kPairLanes / width strips of type L), in the fixed
+/// order ((l0 + l4) + (l2 + l6)) + ((l1 + l5) + (l3 + l7)).
+template <class L>
+[[gnu::always_inline]] inline double sumPairLanes(const L* acc) {
+    double l[kPairLanes];
+    for (int u = 0; u < kPairLanes / kLanesOf<L>; ++u)
+        for (int j = 0; j < kLanesOf<L>; ++j) l[u * kLanesOf<L> + j] = acc[u][j];
+    return ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
+}
 
 /// q where s < 0, else 0 (lane by lane): a select, not a branch, so that it vectorises.
 [[gnu::always_inline]] inline double whereNegative(double s, double q) {

@@ -60,6 +60,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "particles/bond_view.hpp"
 #include "particles/reference.hpp"
 #include "particles/state.hpp"
 
@@ -116,23 +117,6 @@ bool segmentCrossesPatch(const CrackPatch& patch, const Vec3& from, const Vec3& 
 /// patch (edge1 × edge2 = 0) or a flag array that does not match the pairs.
 Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patches,
                        std::vector<std::uint8_t>& bondIntact);
-
-/// What the pair loops need of the bonds: null pointers when no body can break.
-struct BondView {
-    const std::uint8_t* intact = nullptr;   ///< per CSR pair: 1 holds, 0 broken
-    const std::uint8_t* damaged = nullptr;  ///< per particle: 1 if any of its bonds broke
-    bool anyDamaged = false;                ///< some particle has a broken bond
-    /// True when every particle of [begin, end) keeps all its bonds (stencil path allowed).
-    bool allIntact(Index begin, Index end) const {
-        if (damaged == nullptr) return true;
-        for (Index a = begin; a < end; ++a)
-            if (damaged[a] != 0) return false;
-        return true;
-    }
-    bool holds(Index pair) const { return intact == nullptr || intact[pair] != 0; }
-    /// True when particle a keeps all its bonds (its interface weight corrections apply).
-    bool keepsAll(Index a) const { return damaged == nullptr || damaged[a] == 0; }
-};
 
 class BrittleBonds {
   public:

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstring>
 
 #include "core/lanes.hpp"
 #include "core/parallel.hpp"
@@ -221,107 +220,6 @@ GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactor
 // q N_b gN (gN = ∇W_cb same-space, 0 across, −w_bc from b's list); sumQW takes q gQ (own list
 // only); the hourglass force −κ y (y = x_b − x_c) counts in full within a space and half
 // across (the other half on b's side).
-inline constexpr int kPairLanes = 8;
-
-// Staged pairs of c: what its list and the cross lists hold, padded to a multiple of kPairLanes.
-inline Index stagedCount(const Reference& ref, const BondView& bonds, Index c) {
-    const PairList& P = ref.pairs;
-    const auto ic = static_cast<std::size_t>(c);
-    Index n = 0;
-    for (Index k = P.begin(c); k < P.end(c); ++k) n += bonds.holds(k) ? 1 : 0;
-    if (!ref.crossOffset.empty())
-        for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot)
-            n += bonds.holds(ref.crossPair[static_cast<std::size_t>(slot)]) ? 1 : 0;
-    return (n + kPairLanes - 1) / kPairLanes * kPairLanes;
-}
-
-// Stages particle c's pairs (scalar) into st from entry `begin`; returns the padded count.
-inline Index stagePairs(const KernelEntry* table, const Reference& ref, const BondView& bonds,
-                        Index c, StagedPairs& st, std::size_t begin) {
-    const PairList& P = ref.pairs;
-    const auto ic = static_cast<std::size_t>(c);
-    const std::size_t m = st.stride;
-    std::size_t i = begin;
-    const auto put = [&](Index b, const Vec3& own, const Vec3& wT, const Vec3& gQ, const Vec3& gN,
-                         double W, double share, double valid) {
-        st.b[i] = b, st.W[i] = W, st.share[i] = share, st.valid[i] = valid;
-        for (std::size_t r = 0; r < 3; ++r) {
-            const auto e = static_cast<Eigen::Index>(r);
-            st.wOwn[r * m + i] = own[e], st.wT[r * m + i] = wT[e];
-            st.gQ[r * m + i] = gQ[e], st.gN[r * m + i] = gN[e];
-        }
-        ++i;
-    };
-    const Vec3* own = bonds.keepsAll(c) ? ref.pairCorrections(c) : nullptr;
-    const Vec3* mirror = ref.mirrorCorrections(c);
-    const Vec3 zero = Vec3::Zero();
-    for (Index k = P.begin(c); k < P.end(c); ++k) {
-        if (!bonds.holds(k)) continue;
-        const Index b = P.neighbor[static_cast<std::size_t>(k)];
-        const KernelEntry& e = table[P.kernelId[static_cast<std::size_t>(k)]];
-        const auto slot = static_cast<std::size_t>(k - P.begin(c));
-        const Vec3 w = own != nullptr ? Vec3(e.gradW + own[slot]) : e.gradW;
-        if (ref.space[static_cast<std::size_t>(b)] != ref.space[ic]) {
-            put(b, w, zero, e.gradW, zero, e.W, 0.5, 1.0);
-        } else {
-            // −K_b w_bc with w_bc = −w_cb + (the mirror's correction)
-            const Vec3 wT =
-                mirror != nullptr && bonds.keepsAll(b) ? Vec3(e.gradW - mirror[slot]) : e.gradW;
-            put(b, w, wT, e.gradW, e.gradW, e.W, 1.0, 1.0);
-        }
-    }
-    if (!ref.crossOffset.empty())
-        for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot) {
-            const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
-            if (!bonds.holds(k)) continue;
-            const Index owner = ref.crossOwner[static_cast<std::size_t>(slot)];
-            const KernelEntry& e = table[P.kernelId[static_cast<std::size_t>(k)]];  // w_bc
-            const Vec3* ownerCorrection =
-                bonds.keepsAll(owner) ? ref.pairCorrections(owner) : nullptr;
-            const Vec3 w = ownerCorrection != nullptr
-                               ? Vec3(e.gradW + ownerCorrection[k - P.begin(owner)])
-                               : e.gradW;
-            put(owner, zero, -w, zero, -e.gradW, e.W, 0.5, 1.0);
-        }
-    const std::size_t padded =
-        begin + static_cast<std::size_t>((i - begin + kPairLanes - 1) / kPairLanes * kPairLanes);
-    while (i < padded) put(c, zero, zero, zero, zero, 0.0, 0.0, 0.0);
-    return static_cast<Index>(padded - begin);
-}
-
-// The lanes of p[index[0]], p[index[1]], ... (a gather). With 4 or 8 lanes the hardware's
-// gather instruction, as an asm statement: the intrinsics cannot be inlined into these templates
-// (they are compiled for the default target and inlined into the wide ones), an asm statement
-// can. The fields it reads are not written during the force pass.
-template <class L>
-[[gnu::always_inline]] inline L gatherAt(const double* p, const Index* index) {
-#if defined(__x86_64__)
-    if constexpr (kLanesOf<L> == 8) {
-        typedef Index Index8 __attribute__((vector_size(32)));
-        Index8 i;
-        std::memcpy(&i, index, sizeof i);
-        L v;
-        asm("kxnorw %%k1, %%k1, %%k1\n\tvgatherdpd (%1,%2,8), %0%{%%k1%}"
-            : "=&v"(v)
-            : "r"(p), "v"(i)
-            : "k1");
-        return v;
-    } else if constexpr (kLanesOf<L> == 4) {
-        typedef Index Index4 __attribute__((vector_size(16)));
-        Index4 i;
-        std::memcpy(&i, index, sizeof i);
-        L v, mask;
-        asm("vpcmpeqd %1, %1, %1\n\tvgatherdpd %1, (%2,%3,8), %0"
-            : "=&x"(v), "=&x"(mask)
-            : "r"(p), "x"(i));
-        return v;
-    }
-#endif
-    L v;
-    for (int j = 0; j < kLanesOf<L>; ++j) v[j] = p[index[j]];
-    return v;
-}
-
 // Mask type of strip type L (what a comparison of two L yields).
 template <class L>
 using MaskOf = decltype(L{} < L{});
@@ -332,27 +230,19 @@ template <class L>
 [[gnu::always_inline]] inline void gatherTimes(const std::array<const double*, 9>& M,
                                                const Index* b, const L (&w)[3], L (&out)[3]) {
     for (std::size_t r = 0; r < 3; ++r)
-        out[r] = gatherAt<L>(M[3 * r], b) * w[0] + gatherAt<L>(M[3 * r + 1], b) * w[1] +
-                 gatherAt<L>(M[3 * r + 2], b) * w[2];
+        out[r] = gatherLanesAt<L>(M[3 * r], b) * w[0] + gatherLanesAt<L>(M[3 * r + 1], b) * w[1] +
+                 gatherLanesAt<L>(M[3 * r + 2], b) * w[2];
 }
 
-// Per-particle sums of the CSR path, in kPairLanes lanes held as kPairLanes / width strips.
+// Per-particle sums of the CSR path, in kPairLanes lanes held as kPairLanes / width strips
+// (core/lanes.hpp).
 template <class L>
 struct PairLaneSums {
     static constexpr int kStrips = kPairLanes / kLanesOf<L>;
-    L sumW[kStrips][3] = {}, fK[kStrips][3] = {}, sumQW[kStrips][3] = {}, fN[kStrips][3] = {},
-      fh[kStrips][3] = {};
-    // Σ over the eight lanes in a fixed order: ((l0 + l4) + (l2 + l6)) + ((l1 + l5) + (l3 + l7)).
-    static Vec3 reduce(const L (&acc)[kStrips][3]) {
-        Vec3 out;
-        for (std::size_t r = 0; r < 3; ++r) {
-            double l[kPairLanes];
-            for (int u = 0; u < kStrips; ++u)
-                for (int j = 0; j < kLanesOf<L>; ++j) l[u * kLanesOf<L> + j] = acc[u][r][j];
-            out[static_cast<Eigen::Index>(r)] =
-                ((l[0] + l[4]) + (l[2] + l[6])) + ((l[1] + l[5]) + (l[3] + l[7]));
-        }
-        return out;
+    L sumW[3][kStrips] = {}, fK[3][kStrips] = {}, sumQW[3][kStrips] = {}, fN[3][kStrips] = {},
+      fh[3][kStrips] = {};
+    static Vec3 reduce(const L (&acc)[3][kStrips]) {
+        return Vec3(sumPairLanes<L>(acc[0]), sumPairLanes<L>(acc[1]), sumPairLanes<L>(acc[2]));
     }
 };
 
@@ -366,11 +256,10 @@ template <bool Viscous, int Hourglass, class L>
     const std::size_t m = st.stride;
     const auto ic = static_cast<std::size_t>(c);
     const auto at = [ic](const double* p) { return L{} + p[ic]; };
-    L xc[3], vc[3], Xc[3], Fc[9];
-    for (std::size_t r = 0; r < 3; ++r)
-        xc[r] = at(in.x[r]), vc[r] = at(in.v[r]), Xc[r] = at(in.X[r]);
+    L xc[3], vc[3], Fc[9];
+    for (std::size_t r = 0; r < 3; ++r) xc[r] = at(in.x[r]), vc[r] = at(in.v[r]);
     for (std::size_t rc = 0; rc < 9; ++rc) Fc[rc] = at(in.F[rc]);
-    const L hc = at(in.h), cc = at(in.c), rhoc = at(in.rho), alphac = at(in.alpha), Vc = at(in.V);
+    const L cc = at(in.c), rhoc = at(in.rho), alphac = at(in.alpha);
     L sc{};
     if constexpr (Hourglass == kSecantHourglass) sc = at(in.hourglassScale);
     Sums s;
@@ -384,49 +273,50 @@ template <bool Viscous, int Hourglass, class L>
             };
             L w[3];
             load3(st.wOwn, w);
-            for (std::size_t r = 0; r < 3; ++r) s.sumW[u][r] += w[r];
+            for (std::size_t r = 0; r < 3; ++r) s.sumW[r][u] += w[r];
             load3(st.wT, w);
             L Kw[3];
             gatherTimes<L>(in.K, b, w, Kw);
-            for (std::size_t r = 0; r < 3; ++r) s.fK[u][r] += Kw[r];
+            for (std::size_t r = 0; r < 3; ++r) s.fK[r][u] += Kw[r];
             L y[3];
-            for (std::size_t r = 0; r < 3; ++r) y[r] = gatherAt<L>(in.x[r], b) - xc[r];
+            for (std::size_t r = 0; r < 3; ++r) y[r] = gatherLanesAt<L>(in.x[r], b) - xc[r];
             const L y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
             if constexpr (Viscous) {
                 L vx{};
-                for (std::size_t r = 0; r < 3; ++r) vx += (vc[r] - gatherAt<L>(in.v[r], b)) * -y[r];
-                const L q = viscousPairPressure<L>(
-                    in.viscosity, vx, y2, 0.5 * (hc + gatherAt<L>(in.h, b)),
-                    0.5 * (cc + gatherAt<L>(in.c, b)), 0.5 * (rhoc + gatherAt<L>(in.rho, b)),
-                    0.5 * (alphac + gatherAt<L>(in.alpha, b)));
+                for (std::size_t r = 0; r < 3; ++r)
+                    vx += (vc[r] - gatherLanesAt<L>(in.v[r], b)) * -y[r];
+                const L q =
+                    viscousPairPressure<L>(in.viscosity, vx, y2, loadLanes<L>(st.hBar.data() + j),
+                                           0.5 * (cc + gatherLanesAt<L>(in.c, b)),
+                                           0.5 * (rhoc + gatherLanesAt<L>(in.rho, b)),
+                                           0.5 * (alphac + gatherLanesAt<L>(in.alpha, b)));
                 load3(st.gQ, w);
-                for (std::size_t r = 0; r < 3; ++r) s.sumQW[u][r] += q * w[r];
+                for (std::size_t r = 0; r < 3; ++r) s.sumQW[r][u] += q * w[r];
                 load3(st.gN, w);
                 L Nw[3];
                 gatherTimes<L>(in.N, b, w, Nw);
-                for (std::size_t r = 0; r < 3; ++r) s.fN[u][r] += q * Nw[r];
+                for (std::size_t r = 0; r < 3; ++r) s.fN[r][u] += q * Nw[r];
             }
             if constexpr (Hourglass) {
                 L Y[3];
-                for (std::size_t r = 0; r < 3; ++r) Y[r] = gatherAt<L>(in.X[r], b) - Xc[r];
-                L weight = 0.5 * (Vc + gatherAt<L>(in.V, b)) * loadLanes<L>(st.W.data() + j);
+                load3(st.Y, Y);
+                L weight = loadLanes<L>(st.hgWeight.data() + j);
                 if constexpr (Hourglass == kSecantHourglass)
-                    weight *= 0.5 * (sc + gatherAt<L>(in.hourglassScale, b));
+                    weight *= 0.5 * (sc + gatherLanesAt<L>(in.hourglassScale, b));
                 L predicted{};
                 for (std::size_t r = 0; r < 3; ++r) {
                     L row{};
                     for (std::size_t k = 0; k < 3; ++k)
-                        row += (Fc[3 * r + k] + gatherAt<L>(in.F[3 * r + k], b)) * Y[k];
+                        row += (Fc[3 * r + k] + gatherLanesAt<L>(in.F[3 * r + k], b)) * Y[k];
                     predicted += row * y[r];
                 }
-                const L kappa =
-                    hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, y2,
-                                                Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], weight);
+                const L kappa = hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, y2,
+                                                            loadLanes<L>(st.Y2.data() + j), weight);
                 // Padding lanes (b = c) give 0/0: selected away.
                 const MaskOf<L> valid = loadLanes<L>(st.valid.data() + j) != 0.0;
                 const L share = loadLanes<L>(st.share.data() + j);
                 for (std::size_t r = 0; r < 3; ++r)
-                    s.fh[u][r] = valid ? s.fh[u][r] + share * (-kappa * y[r]) : s.fh[u][r];
+                    s.fh[r][u] = valid ? s.fh[r][u] + share * (-kappa * y[r]) : s.fh[r][u];
             }
         }
     leaveLanes<L>();
@@ -452,12 +342,9 @@ template <bool Viscous, int Hourglass, class L>
                 static_cast<Index>(in.staged->begin[ic + 1] - begin), c, force, parts);
             continue;
         }
-        const auto ic = static_cast<std::size_t>(c);
-        const auto need = static_cast<std::size_t>(
-            ref.pairs.end(c) - ref.pairs.begin(c) + kPairLanes +
-            (ref.crossOffset.empty() ? 0 : ref.crossOffset[ic + 1] - ref.crossOffset[ic]));
+        const auto need = static_cast<std::size_t>(stagedCapacity(ref, c));
         if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
-        const Index size = stagePairs(in.table, ref, bonds, c, scratch, 0);
+        const Index size = stagePairs(ref, bonds, c, scratch, 0);
         csrParticleForce<Viscous, Hourglass, L>(in, sf, scratch, 0, size, c, force, parts);
     }
 }
@@ -514,32 +401,6 @@ void forceLoop(const ForceView& in, const Reference& ref, const StressFactors& s
 }
 
 }  // namespace
-
-std::size_t CsrPairWeights::bytes() const {
-    return begin.size() * sizeof(std::size_t) +
-           pairs.stride * (sizeof(Index) + 13 * sizeof(double));
-}
-
-CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks) {
-    CsrPairWeights out;
-    const auto n = static_cast<std::size_t>(ref.size());
-    std::vector<Index> count(n, 0);
-    for (const ParticleBlock& block : blocks.blocks)
-        if (block.stencil == kNoStencil)
-            for (Index i = 0; i < block.size(); ++i)
-                count[static_cast<std::size_t>(block.particle(i))] =
-                    stagedCount(ref, BondView{}, block.particle(i));
-    out.begin.assign(n + 1, 0);
-    for (std::size_t a = 0; a < n; ++a)
-        out.begin[a + 1] = out.begin[a] + static_cast<std::size_t>(count[a]);
-    out.pairs.resize(out.begin[n]);
-    parallelFor(ref.size(), [&](Index a) {
-        if (count[static_cast<std::size_t>(a)] > 0)
-            stagePairs(ref.pairs.table.data(), ref, BondView{}, a, out.pairs,
-                       out.begin[static_cast<std::size_t>(a)]);
-    });
-    return out;
-}
 
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,

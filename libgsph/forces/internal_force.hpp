@@ -25,6 +25,7 @@
 #include "forces/artificial_viscosity.hpp"
 #include "forces/force_stage.hpp"  // ForceParts
 #include "forces/hourglass.hpp"
+#include "neighbors/staged_pairs.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
 
@@ -72,32 +73,6 @@ struct ForceOptions {
     /// E throughout, or × ½(s_a + s_b) of StressFactors::hourglassScale (forces/hourglass.hpp)
     HourglassModulus hourglassModulus = HourglassModulus::Elastic;
 };
-
-/// The pairs of the CSR path staged as SoA weights (what internal_force.cpp's vector pass reads;
-/// entry i of a vector weight's component r at [r * stride + i]): per pair that holds, the
-/// neighbour b and the weights of each term, signed and zero where the term is absent; each
-/// particle's run padded to a multiple of 8 with entries whose `valid` is 0.
-struct StagedPairs {
-    std::vector<Index> b;
-    std::vector<double> wOwn, wT, gQ, gN, W, share, valid;
-    std::size_t stride = 0;
-    void resize(std::size_t n) {
-        stride = n;
-        b.resize(n), W.resize(n), share.resize(n), valid.resize(n);
-        wOwn.resize(3 * n), wT.resize(3 * n), gQ.resize(3 * n), gN.resize(3 * n);
-    }
-};
-
-/// Every CSR particle's pairs staged once in the reference configuration, all bonds intact:
-/// particle a's run is [begin[a], begin[a + 1]) of `pairs` (empty for stencil particles).
-/// internalForce reads it while no particle is damaged and stages each CSR particle's pairs
-/// itself otherwise; the two give the same bits. About 110 bytes per pair.
-struct CsrPairWeights {
-    std::vector<std::size_t> begin;
-    StagedPairs pairs;
-    std::size_t bytes() const;
-};
-CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks);
 
 /// f_c for the particles of one body, partitioned into `blocks` (built from ref.pairs).
 /// Writes force[c]; parts.* only when that term is on (sized by the caller: ref.size()).

@@ -6,6 +6,7 @@ namespace gsph {
 InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double> youngsModulus,
                                        const ParticleFields& fields, const StressFactors& factors,
                                        const std::vector<StencilBlocks>& blocks,
+                                       const std::vector<CsrPairWeights>& staged,
                                        ViscosityCoefficients viscosity, double hourglass,
                                        HourglassModulus modulus, const BrittleBonds& bonds)
     : ref_(ref),
@@ -13,12 +14,11 @@ InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double>
       fields_(fields),
       factors_(factors),
       blocks_(blocks),
+      staged_(staged),
       viscosity_(viscosity),
       hourglass_(hourglass),
       modulus_(modulus),
-      bonds_(bonds) {
-    for (const StencilBlocks& body : blocks_) staged_.push_back(stageCsrPairs(ref_, body));
-}
+      bonds_(bonds) {}
 
 StageNeeds InternalForceStage::needs() const {
     StageNeeds needs;

@@ -19,12 +19,14 @@ namespace gsph {
 
 class InternalForceStage final : public ForceStage {
   public:
-    /// Reads `fields`, `factors`, `blocks` (one per body) and the bonds at every evaluation;
-    /// they must outlive the stage. `youngsModulus`: E per body, as `blocks` (scales the
-    /// hourglass penalty) [Pa]; `modulus`: the penalty's in plastic flow (forces/hourglass.hpp).
+    /// Reads `fields`, `factors`, `blocks` and `staged` (one per body) and the bonds at every
+    /// evaluation; they must outlive the stage. `youngsModulus`: E per body, as `blocks` (scales
+    /// the hourglass penalty) [Pa]; `modulus`: the penalty's in plastic flow
+    /// (forces/hourglass.hpp).
     InternalForceStage(const Reference& ref, std::vector<double> youngsModulus,
                        const ParticleFields& fields, const StressFactors& factors,
-                       const std::vector<StencilBlocks>& blocks, ViscosityCoefficients viscosity,
+                       const std::vector<StencilBlocks>& blocks,
+                       const std::vector<CsrPairWeights>& staged, ViscosityCoefficients viscosity,
                        double hourglass, HourglassModulus modulus, const BrittleBonds& bonds);
 
     std::string name() const override { return "internal force"; }
@@ -37,11 +39,11 @@ class InternalForceStage final : public ForceStage {
     const ParticleFields& fields_;
     const StressFactors& factors_;
     const std::vector<StencilBlocks>& blocks_;
+    const std::vector<CsrPairWeights>& staged_;  ///< per body, as blocks_
     ViscosityCoefficients viscosity_;
     double hourglass_;
     HourglassModulus modulus_;
     const BrittleBonds& bonds_;
-    std::vector<CsrPairWeights> staged_;  ///< per body, as blocks_
 };
 
 }  // namespace gsph

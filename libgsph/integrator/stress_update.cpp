@@ -163,7 +163,7 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
 
 template <class Model>
 void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blocks,
-                 const ParticleBlock& block) {
+                 const CsrPairWeights& staged, const ParticleBlock& block) {
     const BondView bonds = s.bonds.view(s.state);
     if (s.atRest) {
         for (Index i = 0; i < block.size(); ++i) {
@@ -194,9 +194,21 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
                 detachParticle(model, s, static_cast<std::size_t>(a));
                 continue;
             }
+            // The pairs staged once while nothing is damaged, else staged here.
             Mat3 gradX, gradV;
-            thetaGradients(s.ref, a, s.state.x.data(), s.state.v.data(), gradX, gradV, bonds.intact,
-                           bonds.keepsAll(a) ? s.ref.pairCorrections(a) : nullptr);
+            const auto ia = static_cast<std::size_t>(a);
+            if (!bonds.anyDamaged) {
+                const std::size_t begin = staged.begin[ia];
+                stagedThetaGradients(staged.pairs, begin,
+                                     static_cast<Index>(staged.begin[ia + 1] - begin), s.fields.x,
+                                     s.fields.v, a, gradX, gradV);
+            } else {
+                thread_local StagedPairs scratch;
+                const auto need = static_cast<std::size_t>(stagedCapacity(s.ref, a));
+                if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
+                const Index size = stagePairs(s.ref, bonds, a, scratch, 0);
+                stagedThetaGradients(scratch, 0, size, s.fields.x, s.fields.v, a, gradX, gradV);
+            }
             advanceParticle(model, s, a, gradX, gradV);
         }
     }
@@ -216,6 +228,7 @@ StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& b
     for (std::size_t a = 0; a < n; ++a) fields_.X.set(a, ref.X[a]);
     for (const BodyRange& body : bodies_)
         blocks_.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
+    for (const StencilBlocks& blocks : blocks_) staged_.push_back(stageCsrPairs(ref, blocks));
     for (const BodyRange& body : bodies_)
         if (tracksHistory(*body.material)) damageDissipation_.assign(n, 0.0);
     if (bonds_.enabled()) fractureEnergy_.assign(n, 0.0);
@@ -260,7 +273,8 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
         std::visit(
             [&](const auto& model) {
                 parallelForBlocks(blocks.cost, [&](std::ptrdiff_t k) {
-                    updateBlock(model, s, blocks, blocks.blocks[static_cast<std::size_t>(k)]);
+                    updateBlock(model, s, blocks, staged_[b],
+                                blocks.blocks[static_cast<std::size_t>(k)]);
                 });
             },
             *bodies_[b].material);

@@ -55,6 +55,8 @@ class StressUpdate {
     const ParticleFields& fields() const { return fields_; }
     /// Per body: its stencil and CSR blocks.
     const std::vector<StencilBlocks>& blocks() const { return blocks_; }
+    /// Per body, as blocks(): its CSR particles' pairs staged once (neighbors/staged_pairs.hpp).
+    const std::vector<CsrPairWeights>& staged() const { return staged_; }
     /// Current spacing ℓ_a of each particle [m].
     const std::vector<double>& lengthScale() const { return lengthScale_; }
 
@@ -69,6 +71,7 @@ class StressUpdate {
     StressFactors factors_;
     ParticleFields fields_;
     std::vector<StencilBlocks> blocks_;
+    std::vector<CsrPairWeights> staged_;
     std::vector<double> lengthScale_;
     std::vector<std::uint8_t> failure_;  ///< per particle: why the update failed (0: it did not)
     /// Per particle, this step's failure loss [J] (sized only when a body's model tracks a

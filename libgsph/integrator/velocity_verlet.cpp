@@ -70,7 +70,8 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     }
     stages_.push_back(std::make_shared<InternalForceStage>(
         ref, std::move(youngsModulus), stress_.fields(), stress_.factors(), stress_.blocks(),
-        options_.viscosity, options_.hourglass, options_.hourglassModulus, bonds_));
+        stress_.staged(), options_.viscosity, options_.hourglass, options_.hourglassModulus,
+        bonds_));
     if (ref.dim.axisymmetric) stages_.push_back(std::make_shared<HoopStressStage>(ref));
     for (auto& stage :
          makeContactStages(ref, pWaveSpeed2, bodies_.size(), options_.contact, std::move(walls)))

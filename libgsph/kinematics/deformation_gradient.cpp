@@ -107,7 +107,75 @@ GSPH_AVX512_TARGET void avx512BlockGradients(const Stencil& st, Index a0, Index 
     blockGradients<Lanes8>(st, a0, len, stride, x, v, g);
 }
 
+// Σ_b f_b ⊗ wOwn and Σ wOwn over a's staged pairs, in kPairLanes lanes (strip type L).
+template <class L>
+[[gnu::always_inline]] inline void stagedSums(const StagedPairs& st, std::size_t begin, Index size,
+                                              const Vec3Field& x, const Vec3Field& v,
+                                              double (&sx)[9], double (&sv)[9], double (&sw)[3]) {
+    constexpr int strips = kPairLanes / kLanesOf<L>;
+    L ax[9][strips] = {}, av[9][strips] = {}, aw[3][strips] = {};
+    const std::size_t m = st.stride;
+    for (Index j0 = 0; j0 < size; j0 += kPairLanes)
+        for (int u = 0; u < strips; ++u) {
+            const std::size_t j = begin + static_cast<std::size_t>(j0 + u * kLanesOf<L>);
+            const std::int32_t* b = st.b.data() + j;
+            L w[3];
+            for (std::size_t c = 0; c < 3; ++c) {
+                w[c] = loadLanes<L>(st.wOwn.data() + c * m + j);
+                aw[c][u] += w[c];
+            }
+            for (int r = 0; r < 3; ++r) {
+                const L xb = gatherLanesAt<L>(x.component(r), b);
+                const L vb = gatherLanesAt<L>(v.component(r), b);
+                for (std::size_t c = 0; c < 3; ++c) {
+                    ax[3 * r + c][u] += xb * w[c];
+                    av[3 * r + c][u] += vb * w[c];
+                }
+            }
+        }
+    for (int rc = 0; rc < 9; ++rc)
+        sx[rc] = sumPairLanes<L>(ax[rc]), sv[rc] = sumPairLanes<L>(av[rc]);
+    for (int c = 0; c < 3; ++c) sw[c] = sumPairLanes<L>(aw[c]);
+    leaveLanes<L>();
+}
+
+void portableStagedSums(const StagedPairs& st, std::size_t begin, Index size, const Vec3Field& x,
+                        const Vec3Field& v, double (&sx)[9], double (&sv)[9], double (&sw)[3]) {
+    stagedSums<Lanes2>(st, begin, size, x, v, sx, sv, sw);
+}
+
+GSPH_AVX2_TARGET void avx2StagedSums(const StagedPairs& st, std::size_t begin, Index size,
+                                     const Vec3Field& x, const Vec3Field& v, double (&sx)[9],
+                                     double (&sv)[9], double (&sw)[3]) {
+    stagedSums<Lanes4>(st, begin, size, x, v, sx, sv, sw);
+}
+
+GSPH_AVX512_TARGET void avx512StagedSums(const StagedPairs& st, std::size_t begin, Index size,
+                                         const Vec3Field& x, const Vec3Field& v, double (&sx)[9],
+                                         double (&sv)[9], double (&sw)[3]) {
+    stagedSums<Lanes8>(st, begin, size, x, v, sx, sv, sw);
+}
+
 }  // namespace
+
+void stagedThetaGradients(const StagedPairs& st, std::size_t begin, Index size, const Vec3Field& x,
+                          const Vec3Field& v, Index a, Mat3& gradX, Mat3& gradV) {
+    double sx[9], sv[9], sw[3];
+    const int width = laneWidth();
+    if (width >= 8)
+        avx512StagedSums(st, begin, size, x, v, sx, sv, sw);
+    else if (width >= 4)
+        avx2StagedSums(st, begin, size, x, v, sx, sv, sw);
+    else
+        portableStagedSums(st, begin, size, x, v, sx, sv, sw);
+    const auto ia = static_cast<std::size_t>(a);
+    const Vec3 xa = x[ia], va = v[ia];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            gradX(r, c) = sx[3 * r + c] - xa[r] * sw[c];
+            gradV(r, c) = sv[3 * r + c] - va[r] * sw[c];
+        }
+}
 
 void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,
                            const Vec3Field& v, BlockThetaGradients& g) {

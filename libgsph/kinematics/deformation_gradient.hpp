@@ -7,7 +7,8 @@
 // In an axisymmetric run the zz entries are the hoop stretch r/R and its rate v_r/R instead
 // (particles/axisymmetry.hpp), set by the callers that build F from these sums.
 // Broken bonds leave the pair list (and G is recomputed), so both properties survive fracture.
-// Two evaluations of the same sum: thetaGradients (one particle, its CSR list) and
+// Three evaluations of the same sum: thetaGradients (one particle, its CSR list, one pair at a
+// time), stagedThetaGradients (one particle, its staged pairs, vectorised across them) and
 // stencilThetaGradients (a block of particles sharing one stencil, SoA x and v, vectorised
 // across the block). Both accumulate Σ_b x_b ⊗ w_ab in list order, then subtract
 // x_a ⊗ Σ_b w_ab; on a symmetric stencil the block sums (x_{a+δ} − x_{a−δ}) ⊗ w over mirrored
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "core/soa_field.hpp"
+#include "neighbors/staged_pairs.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
 
@@ -63,6 +65,13 @@ inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const V
     gradX = sx - x[ia] * sw.transpose();
     gradV = sv - v[ia] * sw.transpose();
 }
+
+/// thetaGradients of particle a from its staged pairs (neighbors/staged_pairs.hpp: entries
+/// [begin, begin + size) of st, weights wOwn, which already leave out the bonds that broke and
+/// carry a's interface corrections), vectorised across the pairs in the lanes of core/lanes.hpp
+/// (kPairLanes), so the same bits at every strip width; equal to thetaGradients to round-off.
+void stagedThetaGradients(const StagedPairs& st, std::size_t begin, Index size, const Vec3Field& x,
+                          const Vec3Field& v, Index a, Mat3& gradX, Mat3& gradV);
 
 /// θ-gradients of one block, component-major (row r, column c at [3r + c][i]) so that the
 /// accumulation loops vectorise across the block's particles i.

@@ -12,6 +12,7 @@
 
 #include "core/lanes.hpp"
 #include "forces/internal_force.hpp"
+#include "kinematics/deformation_gradient.hpp"
 #include "support/overset_fixtures.hpp"
 
 namespace gsph {
@@ -166,6 +167,44 @@ TEST_P(CsrPairLanes, StagedOnceOrEachCallAtEveryWidthGiveTheBitsOfThePairFormula
                 worst / scale);
     EXPECT_GT(scale, 0.0);
     EXPECT_LT(worst / scale, 3e-15);
+}
+
+TEST(CsrPairLanes, StagedThetaGradientsAreTheListSumsAtEveryWidth) {
+    const Fixture fx(HourglassModulus::Elastic);
+    const Reference& ref = fx.t.ref;
+    const CsrPairWeights staged = stageCsrPairs(ref, fx.blocks);
+    std::vector<Vec3> x(static_cast<std::size_t>(ref.size())), v(x.size());
+    for (std::size_t a = 0; a < x.size(); ++a) x[a] = fx.fields.x[a], v[a] = fx.fields.v[a];
+    const auto gradients = [&](int width) {
+        limitLanes(width);
+        std::vector<Mat3> g(2 * x.size());
+        for (Index a = 0; a < ref.size(); ++a) {
+            const auto ia = static_cast<std::size_t>(a);
+            stagedThetaGradients(staged.pairs, staged.begin[ia],
+                                 static_cast<Index>(staged.begin[ia + 1] - staged.begin[ia]),
+                                 fx.fields.x, fx.fields.v, a, g[2 * ia], g[2 * ia + 1]);
+        }
+        limitLanes(8);
+        return g;
+    };
+    const std::vector<Mat3> portable = gradients(2);
+    for (int width : {4, 8}) {
+        const std::vector<Mat3> wide = gradients(width);
+        EXPECT_EQ(std::memcmp(wide.data(), portable.data(), wide.size() * sizeof(Mat3)), 0)
+            << width << " lanes";
+    }
+    double worst = 0.0, scale = 0.0;
+    for (Index a = 0; a < ref.size(); ++a) {
+        const auto ia = static_cast<std::size_t>(a);
+        Mat3 gradX, gradV;
+        thetaGradients(ref, a, x.data(), v.data(), gradX, gradV, nullptr, ref.pairCorrections(a));
+        worst = std::max({worst, (gradX - portable[2 * ia]).cwiseAbs().maxCoeff() / gradX.norm(),
+                          (gradV - portable[2 * ia + 1]).cwiseAbs().maxCoeff() / gradV.norm()});
+        scale = std::max(scale, gradX.norm());
+    }
+    std::printf("[csr lanes] θ-gradients against the list sums one pair at a time: %.1e\n", worst);
+    EXPECT_GT(scale, 0.0);
+    EXPECT_LT(worst, 3e-14);
 }
 
 INSTANTIATE_TEST_SUITE_P(HourglassModulus, CsrPairLanes,

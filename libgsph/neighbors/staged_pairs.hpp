@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+// The pairs of the CSR path staged as SoA weights, so that the pair loops of particles off the
+// stencil blocks (overset spaces, the band, broken bonds) run across a particle's pairs in SIMD
+// lanes (forces/internal_force.cpp, kinematics/deformation_gradient.hpp).
+//
+// A particle's staged pairs are its own list's pairs that hold, then the pairs across spaces
+// whose transposed term comes from the other side's list (Reference::crossPair), padded to a
+// multiple of kPairLanes (core/lanes.hpp). Per pair, with w_cb = ω∇W_cb the table's weight and
+// δw the interface corrections (overset/interface_weights.hpp), DESIGN §4 and §6:
+//   wOwn  w_cb + c's correction (when c keeps all its bonds): F's sum and the stress sum Σ w_cb;
+//         0 for a pair of the other side's list;
+//   wT    the transposed stress term's weight: w_cb − the mirror's correction (same space,
+//         when b keeps all its bonds), 0 across spaces, −(w_bc + b's correction) from b's list;
+//   gQ    the viscous sum's weight: w_cb (own list), 0 (b's list);
+//   gN    the viscous transposed term's: w_cb same space, 0 across, −w_bc from b's list;
+//   Y, Y2 X_b − X_c and |X_b − X_c|² ((Y0² + Y1²) + Y2²); hBar ½(h_c + h_b) (the viscosity's);
+//   hgWeight  ½(V_c + V_b) ω W (the hourglass pair's weight, forces/hourglass.hpp);
+//   share the hourglass force's share (1 within a space, ½ across, the other half on the
+//         other side), 0 for padding; valid: 1, 0 for padding (b = c).
+// Y, Y2, hBar and hgWeight are reference data the force would otherwise gather per pair at
+// every step; they are computed here with the same operations, so the bits do not change.
+// Signs and zeros are exact, so a term that is absent adds exactly nothing (a sum that starts
+// at +0 never becomes −0).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "core/lanes.hpp"
+#include "core/types.hpp"
+#include "neighbors/stencil_blocks.hpp"
+#include "particles/bond_view.hpp"
+#include "particles/reference.hpp"
+
+namespace gsph {
+
+/// The pairs of the CSR path staged as SoA weights (what the vectorised CSR loops read;
+/// entry i of a vector weight's component r at [r * stride + i]): per pair that holds, the
+/// neighbour b and the weights of each term, signed and zero where the term is absent; each
+/// particle's run padded to a multiple of 8 with entries whose `valid` is 0.
+struct StagedPairs {
+    std::vector<Index> b;
+    std::vector<double> wOwn, wT, gQ, gN, Y, Y2, hBar, hgWeight, share, valid;
+    std::size_t stride = 0;
+    void resize(std::size_t n) {
+        stride = n;
+        b.resize(n), Y2.resize(n), hBar.resize(n), hgWeight.resize(n), share.resize(n);
+        valid.resize(n);
+        wOwn.resize(3 * n), wT.resize(3 * n), gQ.resize(3 * n), gN.resize(3 * n), Y.resize(3 * n);
+    }
+};
+
+/// Every CSR particle's pairs staged once in the reference configuration, all bonds intact:
+/// particle a's run is [begin[a], begin[a + 1]) of `pairs` (empty for stencil particles).
+/// The force and θ-gradient loops read it while no particle is damaged and stage each CSR
+/// particle's pairs themselves otherwise (stagePairs); the two give the same bits. 148 bytes a
+/// pair.
+struct CsrPairWeights {
+    std::vector<std::size_t> begin;
+    StagedPairs pairs;
+    std::size_t bytes() const;
+};
+CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks);
+
+/// Staged pairs of c (what its list and the cross lists hold that `bonds` keeps), padded.
+Index stagedCount(const Reference& ref, const BondView& bonds, Index c);
+/// An upper bound of stagedCount for any bonds (the scratch size for c).
+Index stagedCapacity(const Reference& ref, Index c);
+/// Stages particle c's pairs into st from entry `begin` (st.stride ≥ begin + stagedCount);
+/// returns the padded count.
+Index stagePairs(const Reference& ref, const BondView& bonds, Index c, StagedPairs& st,
+                 std::size_t begin);
+
+}  // namespace gsph
