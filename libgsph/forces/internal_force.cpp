@@ -224,105 +224,221 @@ GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactor
 template <class L>
 using MaskOf = decltype(L{} < L{});
 
-// A 3×3 factor (row-major components) of the neighbours times w, row r:
-// (M_r0 w0 + M_r1 w1) + M_r2 w2.
+// The sums of one lane of the CSR path (one particle's, or one of a particle's kPairLanes).
 template <class L>
-[[gnu::always_inline]] inline void gatherTimes(const std::array<const double*, 9>& M,
-                                               const Index* b, const L (&w)[3], L (&out)[3]) {
-    for (std::size_t r = 0; r < 3; ++r)
-        out[r] = gatherLanesAt<L>(M[3 * r], b) * w[0] + gatherLanesAt<L>(M[3 * r + 1], b) * w[1] +
-                 gatherLanesAt<L>(M[3 * r + 2], b) * w[2];
-}
-
-// Per-particle sums of the CSR path, in kPairLanes lanes held as kPairLanes / width strips
-// (core/lanes.hpp).
-template <class L>
-struct PairLaneSums {
-    static constexpr int kStrips = kPairLanes / kLanesOf<L>;
-    L sumW[3][kStrips] = {}, fK[3][kStrips] = {}, sumQW[3][kStrips] = {}, fN[3][kStrips] = {},
-      fh[3][kStrips] = {};
-    static Vec3 reduce(const L (&acc)[3][kStrips]) {
-        return Vec3(sumPairLanes<L>(acc[0]), sumPairLanes<L>(acc[1]), sumPairLanes<L>(acc[2]));
-    }
+struct PairSums {
+    L sumW[3] = {}, fK[3] = {}, sumQW[3] = {}, fN[3] = {}, fh[3] = {};
 };
 
+// The centre's fields, per lane: one particle's in every lane (a run of its pairs), or the
+// particles of a masked strip.
+template <class L>
+struct PairCentre {
+    L x[3], v[3], F[9], X[3], c, rho, alpha, h, V, s{};
+};
+
+template <int Hourglass, class L, class Load>
+[[gnu::always_inline]] inline void loadCentre(const ForceView& in, const Load& load,
+                                              PairCentre<L>& o) {
+    for (std::size_t r = 0; r < 3; ++r)
+        o.x[r] = load(in.x[r]), o.v[r] = load(in.v[r]), o.X[r] = load(in.X[r]);
+    for (std::size_t rc = 0; rc < 9; ++rc) o.F[rc] = load(in.F[rc]);
+    o.c = load(in.c), o.rho = load(in.rho), o.alpha = load(in.alpha), o.h = load(in.h);
+    o.V = load(in.V);
+    if constexpr (Hourglass == kSecantHourglass) o.s = load(in.hourglassScale);
+}
+
+// The weights of staged entries j … j + width − 1 of a run (StagedPairs: all stored).
+template <class L>
+struct RunWeights {
+    const StagedPairs& st;
+    std::size_t j;
+    [[gnu::always_inline]] void load3(const std::vector<double>& v, L (&out)[3]) const {
+        for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * st.stride + j);
+    }
+    [[gnu::always_inline]] void own(L (&w)[3]) const { load3(st.wOwn, w); }
+    [[gnu::always_inline]] void transposed(L (&w)[3]) const { load3(st.wT, w); }
+    [[gnu::always_inline]] void viscous(L (&w)[3]) const { load3(st.gQ, w); }
+    [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { load3(st.gN, w); }
+    [[gnu::always_inline]] L hBar(const ForceView&, const PairCentre<L>&, auto&&) const {
+        return loadLanes<L>(st.hBar.data() + j);
+    }
+    [[gnu::always_inline]] void offset(const ForceView&, const PairCentre<L>&, auto&&, L (&Y)[3],
+                                       L& Y2) const {
+        load3(st.Y, Y);
+        Y2 = loadLanes<L>(st.Y2.data() + j);
+    }
+    [[gnu::always_inline]] L hourglassWeight(const ForceView&, const PairCentre<L>&, auto&&) const {
+        return loadLanes<L>(st.hgWeight.data() + j);
+    }
+    [[gnu::always_inline]] L share() const { return loadLanes<L>(st.share.data() + j); }
+    [[gnu::always_inline]] L valid() const { return loadLanes<L>(st.valid.data() + j); }
+};
+
+// The weights of a masked strip's entries (StripPairs): the reference offset, h̄ and the
+// hourglass weight formed from the neighbours' X, h and V as stagePairs forms them.
+template <class L>
+struct StripWeights {
+    const StripPairs& sp;
+    std::size_t j;
+    [[gnu::always_inline]] void load3(const std::vector<double>& v, L (&out)[3]) const {
+        for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * sp.stride + j);
+    }
+    [[gnu::always_inline]] void own(L (&w)[3]) const { load3(sp.wOwn, w); }
+    [[gnu::always_inline]] void transposed(L (&w)[3]) const { load3(sp.wT, w); }
+    [[gnu::always_inline]] void viscous(L (&w)[3]) const { load3(sp.g, w); }
+    [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { load3(sp.g, w); }
+    template <class Fetch>
+    [[gnu::always_inline]] L hBar(const ForceView& in, const PairCentre<L>& o,
+                                  const Fetch& fetch) const {
+        return 0.5 * (o.h + fetch(in.h));
+    }
+    template <class Fetch>
+    [[gnu::always_inline]] void offset(const ForceView& in, const PairCentre<L>& o,
+                                       const Fetch& fetch, L (&Y)[3], L& Y2) const {
+        for (std::size_t r = 0; r < 3; ++r) Y[r] = fetch(in.X[r]) - o.X[r];
+        Y2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
+    }
+    template <class Fetch>
+    [[gnu::always_inline]] L hourglassWeight(const ForceView& in, const PairCentre<L>& o,
+                                             const Fetch& fetch) const {
+        return 0.5 * (o.V + fetch(in.V)) * loadLanes<L>(sp.W.data() + j);
+    }
+    [[gnu::always_inline]] L share() const { return valid(); }
+    [[gnu::always_inline]] L valid() const { return loadLanes<L>(sp.valid.data() + j); }
+};
+
+// The pair terms of one group of entries (one per lane) into s, the weights from `wt`
+// (RunWeights or StripWeights), the neighbours' fields through fetch(component array) (a
+// gather, or a contiguous load at a + δ). Lanes without a pair (valid 0) add nothing.
+template <bool Viscous, int Hourglass, class L, class Weights, class Fetch>
+[[gnu::always_inline]] inline void pairGroup(const ForceView& in, const Weights& wt,
+                                             const PairCentre<L>& o, const Fetch& fetch,
+                                             PairSums<L>& s) {
+    const auto times = [&](const std::array<const double*, 9>& M, const L(&w)[3], L(&out)[3])
+        __attribute__((always_inline)) {
+        for (std::size_t r = 0; r < 3; ++r)
+            out[r] =
+                fetch(M[3 * r]) * w[0] + fetch(M[3 * r + 1]) * w[1] + fetch(M[3 * r + 2]) * w[2];
+    };
+    const MaskOf<L> valid = wt.valid() != 0.0;
+    L w[3];
+    wt.own(w);
+    for (std::size_t r = 0; r < 3; ++r) s.sumW[r] += w[r];
+    wt.transposed(w);
+    L Kw[3];
+    times(in.K, w, Kw);
+    for (std::size_t r = 0; r < 3; ++r) s.fK[r] += Kw[r];
+    L y[3];
+    for (std::size_t r = 0; r < 3; ++r) y[r] = fetch(in.x[r]) - o.x[r];
+    const L y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+    if constexpr (Viscous) {
+        L vx{};
+        for (std::size_t r = 0; r < 3; ++r) vx += (o.v[r] - fetch(in.v[r])) * -y[r];
+        const L q = viscousPairPressure<L>(in.viscosity, vx, y2, wt.hBar(in, o, fetch),
+                                           0.5 * (o.c + fetch(in.c)), 0.5 * (o.rho + fetch(in.rho)),
+                                           0.5 * (o.alpha + fetch(in.alpha)));
+        wt.viscous(w);
+        for (std::size_t r = 0; r < 3; ++r) s.sumQW[r] = valid ? s.sumQW[r] + q * w[r] : s.sumQW[r];
+        wt.viscousTransposed(w);
+        L Nw[3];
+        times(in.N, w, Nw);
+        for (std::size_t r = 0; r < 3; ++r) s.fN[r] = valid ? s.fN[r] + q * Nw[r] : s.fN[r];
+    }
+    if constexpr (Hourglass) {
+        L Y[3], Y2;
+        wt.offset(in, o, fetch, Y, Y2);
+        L weight = wt.hourglassWeight(in, o, fetch);
+        if constexpr (Hourglass == kSecantHourglass)
+            weight *= 0.5 * (o.s + fetch(in.hourglassScale));
+        L predicted{};
+        for (std::size_t r = 0; r < 3; ++r) {
+            L row{};
+            for (std::size_t k = 0; k < 3; ++k)
+                row += (o.F[3 * r + k] + fetch(in.F[3 * r + k])) * Y[k];
+            predicted += row * y[r];
+        }
+        const L kappa = hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, y2, Y2, weight);
+        const L share = wt.share();
+        for (std::size_t r = 0; r < 3; ++r)
+            s.fh[r] = valid ? s.fh[r] + share * (-kappa * y[r]) : s.fh[r];
+    }
+}
+
+// The sums of the CSR path for one block's particles (component-major, as BlockSums).
+struct CsrSums {
+    double sumW[3][kMaxBlock], fK[3][kMaxBlock], sumQW[3][kMaxBlock], fN[3][kMaxBlock],
+        fh[3][kMaxBlock];
+};
+
+// A run of c's staged pairs [begin, begin + size) across kPairLanes lanes (pair j into lane
+// j mod kPairLanes), reduced in the fixed order of sumPairLanes, added into column i of out.
 template <bool Viscous, int Hourglass, class L>
-[[gnu::always_inline]] inline void csrParticleForce(const ForceView& in, const StressFactors& sf,
-                                                    const StagedPairs& st, std::size_t begin,
-                                                    Index size, Index c, std::vector<Vec3>& force,
-                                                    ForceParts& parts) {
-    constexpr int width = kLanesOf<L>;
-    using Sums = PairLaneSums<L>;
-    const std::size_t m = st.stride;
+[[gnu::always_inline]] inline void gatheredPairs(const ForceView& in, const StagedPairs& st,
+                                                 std::size_t begin, Index size, Index c, Index i,
+                                                 CsrSums& out) {
+    constexpr int width = kLanesOf<L>, strips = kPairLanes / width;
     const auto ic = static_cast<std::size_t>(c);
-    const auto at = [ic](const double* p) { return L{} + p[ic]; };
-    L xc[3], vc[3], Fc[9];
-    for (std::size_t r = 0; r < 3; ++r) xc[r] = at(in.x[r]), vc[r] = at(in.v[r]);
-    for (std::size_t rc = 0; rc < 9; ++rc) Fc[rc] = at(in.F[rc]);
-    const L cc = at(in.c), rhoc = at(in.rho), alphac = at(in.alpha);
-    L sc{};
-    if constexpr (Hourglass == kSecantHourglass) sc = at(in.hourglassScale);
-    Sums s;
+    PairCentre<L> o;
+    loadCentre<Hourglass, L>(
+        in, [ic](const double* p) __attribute__((always_inline)) { return L{} + p[ic]; }, o);
+    PairSums<L> s[strips];
     for (Index j0 = 0; j0 < size; j0 += kPairLanes)
-        for (int u = 0; u < Sums::kStrips; ++u) {
+        for (int u = 0; u < strips; ++u) {
             const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
             const Index* b = st.b.data() + j;
-            const auto load3 = [&](const std::vector<double>& v, L(&out)[3])
-                __attribute__((always_inline)) {
-                for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * m + j);
-            };
-            L w[3];
-            load3(st.wOwn, w);
-            for (std::size_t r = 0; r < 3; ++r) s.sumW[r][u] += w[r];
-            load3(st.wT, w);
-            L Kw[3];
-            gatherTimes<L>(in.K, b, w, Kw);
-            for (std::size_t r = 0; r < 3; ++r) s.fK[r][u] += Kw[r];
-            L y[3];
-            for (std::size_t r = 0; r < 3; ++r) y[r] = gatherLanesAt<L>(in.x[r], b) - xc[r];
-            const L y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
-            if constexpr (Viscous) {
-                L vx{};
-                for (std::size_t r = 0; r < 3; ++r)
-                    vx += (vc[r] - gatherLanesAt<L>(in.v[r], b)) * -y[r];
-                const L q =
-                    viscousPairPressure<L>(in.viscosity, vx, y2, loadLanes<L>(st.hBar.data() + j),
-                                           0.5 * (cc + gatherLanesAt<L>(in.c, b)),
-                                           0.5 * (rhoc + gatherLanesAt<L>(in.rho, b)),
-                                           0.5 * (alphac + gatherLanesAt<L>(in.alpha, b)));
-                load3(st.gQ, w);
-                for (std::size_t r = 0; r < 3; ++r) s.sumQW[r][u] += q * w[r];
-                load3(st.gN, w);
-                L Nw[3];
-                gatherTimes<L>(in.N, b, w, Nw);
-                for (std::size_t r = 0; r < 3; ++r) s.fN[r][u] += q * Nw[r];
-            }
-            if constexpr (Hourglass) {
-                L Y[3];
-                load3(st.Y, Y);
-                L weight = loadLanes<L>(st.hgWeight.data() + j);
-                if constexpr (Hourglass == kSecantHourglass)
-                    weight *= 0.5 * (sc + gatherLanesAt<L>(in.hourglassScale, b));
-                L predicted{};
-                for (std::size_t r = 0; r < 3; ++r) {
-                    L row{};
-                    for (std::size_t k = 0; k < 3; ++k)
-                        row += (Fc[3 * r + k] + gatherLanesAt<L>(in.F[3 * r + k], b)) * Y[k];
-                    predicted += row * y[r];
-                }
-                const L kappa = hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, y2,
-                                                            loadLanes<L>(st.Y2.data() + j), weight);
-                // Padding lanes (b = c) give 0/0: selected away.
-                const MaskOf<L> valid = loadLanes<L>(st.valid.data() + j) != 0.0;
-                const L share = loadLanes<L>(st.share.data() + j);
-                for (std::size_t r = 0; r < 3; ++r)
-                    s.fh[r][u] = valid ? s.fh[r][u] + share * (-kappa * y[r]) : s.fh[r][u];
-            }
+            pairGroup<Viscous, Hourglass, L>(
+                in, RunWeights<L>{st, j}, o,
+                [b](const double* p)
+                    __attribute__((always_inline)) { return gatherLanesAt<L>(p, b); },
+                s[u]);
         }
-    leaveLanes<L>();
-    const Vec3 fStress = sf.K[ic] * Sums::reduce(s.sumW) + Sums::reduce(s.fK);
-    finishParticle<Viscous, Hourglass>(sf, c, fStress, Sums::reduce(s.sumQW), Sums::reduce(s.fN),
-                                       Sums::reduce(s.fh), force, parts);
+    const auto add = [&](L(PairSums<L>::*sum)[3], double(&column)[3][kMaxBlock])
+        __attribute__((always_inline)) {
+        for (std::size_t r = 0; r < 3; ++r) {
+            L lanes[strips];
+            for (int u = 0; u < strips; ++u) lanes[u] = (s[u].*sum)[r];
+            column[r][i] += sumPairLanes<L>(lanes);
+        }
+    };
+    add(&PairSums<L>::sumW, out.sumW), add(&PairSums<L>::fK, out.fK);
+    add(&PairSums<L>::sumQW, out.sumQW), add(&PairSums<L>::fN, out.fN);
+    add(&PairSums<L>::fh, out.fh);
+}
+
+// A masked strip (neighbors/staged_pairs.hpp) whose first particle is column i of out: each
+// lane one particle, its entries in order; the sums written into the strip's columns.
+template <bool Viscous, int Hourglass, class L>
+[[gnu::always_inline]] inline void maskedStrip(const ForceView& in, const CsrPairWeights& w,
+                                               const MaskedStrip& strip, Index i, CsrSums& out) {
+    constexpr int width = kLanesOf<L>;
+    const Index* delta = w.delta.data() + strip.deltaBegin;
+    const Index entries = strip.deltaEnd - strip.deltaBegin;
+    for (int u = 0; u < kPairLanes / width; ++u) {
+        const Index a = strip.first + u * width;
+        PairCentre<L> o;
+        loadCentre<Hourglass, L>(
+            in, [a](const double* p) __attribute__((always_inline)) { return loadLanes<L>(p + a); },
+            o);
+        PairSums<L> s;
+        for (Index e = 0; e < entries; ++e) {
+            const Index ad = a + delta[e];
+            pairGroup<Viscous, Hourglass, L>(
+                in,
+                StripWeights<L>{w.stripPairs,
+                                strip.base + static_cast<std::size_t>(e * kPairLanes + u * width)},
+                o,
+                [ad](const double* p)
+                    __attribute__((always_inline)) { return loadLanes<L>(p + ad); },
+                s);
+        }
+        const auto store = [&](const L(&sum)[3], double(&column)[3][kMaxBlock])
+            __attribute__((always_inline)) {
+            for (std::size_t r = 0; r < 3; ++r) storeLanes(column[r] + i + u * width, sum[r]);
+        };
+        store(s.sumW, out.sumW), store(s.fK, out.fK), store(s.sumQW, out.sumQW);
+        store(s.fN, out.fN), store(s.fh, out.fh);
+    }
 }
 
 template <bool Viscous, int Hourglass, class L>
@@ -330,22 +446,44 @@ template <bool Viscous, int Hourglass, class L>
                                                  const StressFactors& sf, const BondView& bonds,
                                                  const ParticleBlock& block,
                                                  std::vector<Vec3>& force, ForceParts& parts) {
-    // Staged once when nothing is damaged (CsrPairWeights), else here, per particle.
-    thread_local StagedPairs scratch;
-    for (Index i = 0; i < block.size(); ++i) {
-        const Index c = block.particle(i);
-        if (in.staged != nullptr && !bonds.anyDamaged) {
-            const auto ic = static_cast<std::size_t>(c);
-            const std::size_t begin = in.staged->begin[ic];
-            csrParticleForce<Viscous, Hourglass, L>(
-                in, sf, in.staged->pairs, begin,
-                static_cast<Index>(in.staged->begin[ic + 1] - begin), c, force, parts);
-            continue;
+    CsrSums s{};
+    const Index len = block.size();
+    const bool cached = in.staged != nullptr && !bonds.anyDamaged;
+    if (cached) {
+        // Staged once (CsrPairWeights): the masked strips, then each particle's other pairs.
+        const CsrPairWeights& w = *in.staged;
+        for (Index i = 0; i < len; ++i) {
+            const Index t = w.stripAt[static_cast<std::size_t>(block.particle(i))];
+            if (t >= 0)
+                maskedStrip<Viscous, Hourglass, L>(in, w, w.strips[static_cast<std::size_t>(t)], i,
+                                                   s);
         }
-        const auto need = static_cast<std::size_t>(stagedCapacity(ref, c));
-        if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
-        const Index size = stagePairs(ref, bonds, c, scratch, 0);
-        csrParticleForce<Viscous, Hourglass, L>(in, sf, scratch, 0, size, c, force, parts);
+        for (Index i = 0; i < len; ++i) {
+            const auto ic = static_cast<std::size_t>(block.particle(i));
+            gatheredPairs<Viscous, Hourglass, L>(in, w.pairs, w.begin[ic],
+                                                 static_cast<Index>(w.begin[ic + 1] - w.begin[ic]),
+                                                 block.particle(i), i, s);
+        }
+    } else {
+        // Bonds have broken: each particle's surviving pairs staged here, in one run.
+        thread_local StagedPairs scratch;
+        for (Index i = 0; i < len; ++i) {
+            const Index c = block.particle(i);
+            const auto need = static_cast<std::size_t>(stagedCapacity(ref, c));
+            if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
+            const Index size = stagePairs(ref, bonds, c, scratch, 0);
+            gatheredPairs<Viscous, Hourglass, L>(in, scratch, 0, size, c, i, s);
+        }
+    }
+    leaveLanes<L>();
+    for (Index i = 0; i < len; ++i) {
+        const auto col = [&](const double(&a)[3][kMaxBlock]) {
+            return Vec3(a[0][i], a[1][i], a[2][i]);
+        };
+        const Index c = block.particle(i);
+        finishParticle<Viscous, Hourglass>(
+            sf, c, sf.K[static_cast<std::size_t>(c)] * col(s.sumW) + col(s.fK), col(s.sumQW),
+            col(s.fN), col(s.fh), force, parts);
     }
 }
 

@@ -188,28 +188,15 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
         for (Index i = 0; i < block.size(); ++i)
             advanceParticle(model, s, block.particle(i), g.gradX(i), g.gradV(i));
     } else {
+        BlockThetaGradients g;
+        csrThetaGradients(s.ref, &staged, bonds, block, s.fields.x, s.fields.v, g);
         for (Index i = 0; i < block.size(); ++i) {
             const Index a = block.particle(i);
             if (s.bonds.detached(a)) {
                 detachParticle(model, s, static_cast<std::size_t>(a));
                 continue;
             }
-            // The pairs staged once while nothing is damaged, else staged here.
-            Mat3 gradX, gradV;
-            const auto ia = static_cast<std::size_t>(a);
-            if (!bonds.anyDamaged) {
-                const std::size_t begin = staged.begin[ia];
-                stagedThetaGradients(staged.pairs, begin,
-                                     static_cast<Index>(staged.begin[ia + 1] - begin), s.fields.x,
-                                     s.fields.v, a, gradX, gradV);
-            } else {
-                thread_local StagedPairs scratch;
-                const auto need = static_cast<std::size_t>(stagedCapacity(s.ref, a));
-                if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
-                const Index size = stagePairs(s.ref, bonds, a, scratch, 0);
-                stagedThetaGradients(scratch, 0, size, s.fields.x, s.fields.v, a, gradX, gradV);
-            }
-            advanceParticle(model, s, a, gradX, gradV);
+            advanceParticle(model, s, a, g.gradX(i), g.gradV(i));
         }
     }
 }

@@ -107,74 +107,165 @@ GSPH_AVX512_TARGET void avx512BlockGradients(const Stencil& st, Index a0, Index 
     blockGradients<Lanes8>(st, a0, len, stride, x, v, g);
 }
 
-// Σ_b f_b ⊗ wOwn and Σ wOwn over a's staged pairs, in kPairLanes lanes (strip type L).
-template <class L>
-[[gnu::always_inline]] inline void stagedSums(const StagedPairs& st, std::size_t begin, Index size,
+// Σ_b x_b ⊗ wOwn, Σ_b v_b ⊗ wOwn and Σ wOwn (staged pairs, neighbors/staged_pairs.hpp) of a
+// CSR block's particles, component-major by column.
+struct CsrThetaSums {
+    double x[9][kMaxBlock], v[9][kMaxBlock], w[3][kMaxBlock];
+};
+
+// The sums of one group of staged entries j … j + width − 1 into the lane sums, the
+// neighbours' x and v through fetch (a gather, or a contiguous load at a + δ).
+template <class L, class Fetch>
+[[gnu::always_inline]] inline void thetaGroup(const double* wOwn, std::size_t stride, std::size_t j,
                                               const Vec3Field& x, const Vec3Field& v,
-                                              double (&sx)[9], double (&sv)[9], double (&sw)[3]) {
-    constexpr int strips = kPairLanes / kLanesOf<L>;
-    L ax[9][strips] = {}, av[9][strips] = {}, aw[3][strips] = {};
-    const std::size_t m = st.stride;
+                                              const Fetch& fetch, L (&ax)[9], L (&av)[9],
+                                              L (&aw)[3]) {
+    L w[3];
+    for (std::size_t c = 0; c < 3; ++c) {
+        w[c] = loadLanes<L>(wOwn + c * stride + j);
+        aw[c] += w[c];
+    }
+    for (int r = 0; r < 3; ++r) {
+        const L xb = fetch(x.component(r)), vb = fetch(v.component(r));
+        for (std::size_t c = 0; c < 3; ++c) {
+            ax[3 * r + c] += xb * w[c];
+            av[3 * r + c] += vb * w[c];
+        }
+    }
+}
+
+// A run of a particle's staged pairs across kPairLanes lanes, reduced in the fixed order of
+// sumPairLanes and added into column i.
+template <class L>
+[[gnu::always_inline]] inline void gatheredThetaSums(const StagedPairs& st, std::size_t begin,
+                                                     Index size, const Vec3Field& x,
+                                                     const Vec3Field& v, Index i,
+                                                     CsrThetaSums& out) {
+    constexpr int width = kLanesOf<L>, strips = kPairLanes / width;
+    L ax[strips][9] = {}, av[strips][9] = {}, aw[strips][3] = {};
     for (Index j0 = 0; j0 < size; j0 += kPairLanes)
         for (int u = 0; u < strips; ++u) {
-            const std::size_t j = begin + static_cast<std::size_t>(j0 + u * kLanesOf<L>);
+            const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
             const std::int32_t* b = st.b.data() + j;
-            L w[3];
-            for (std::size_t c = 0; c < 3; ++c) {
-                w[c] = loadLanes<L>(st.wOwn.data() + c * m + j);
-                aw[c][u] += w[c];
-            }
-            for (int r = 0; r < 3; ++r) {
-                const L xb = gatherLanesAt<L>(x.component(r), b);
-                const L vb = gatherLanesAt<L>(v.component(r), b);
-                for (std::size_t c = 0; c < 3; ++c) {
-                    ax[3 * r + c][u] += xb * w[c];
-                    av[3 * r + c][u] += vb * w[c];
-                }
-            }
+            thetaGroup<L>(
+                st.wOwn.data(), st.stride, j, x, v,
+                [b](const double* p)
+                    __attribute__((always_inline)) { return gatherLanesAt<L>(p, b); },
+                ax[u], av[u], aw[u]);
         }
-    for (int rc = 0; rc < 9; ++rc)
-        sx[rc] = sumPairLanes<L>(ax[rc]), sv[rc] = sumPairLanes<L>(av[rc]);
-    for (int c = 0; c < 3; ++c) sw[c] = sumPairLanes<L>(aw[c]);
+    L lanes[strips];
+    for (int rc = 0; rc < 9; ++rc) {
+        for (int u = 0; u < strips; ++u) lanes[u] = ax[u][rc];
+        out.x[rc][i] += sumPairLanes<L>(lanes);
+        for (int u = 0; u < strips; ++u) lanes[u] = av[u][rc];
+        out.v[rc][i] += sumPairLanes<L>(lanes);
+    }
+    for (int c = 0; c < 3; ++c) {
+        for (int u = 0; u < strips; ++u) lanes[u] = aw[u][c];
+        out.w[c][i] += sumPairLanes<L>(lanes);
+    }
+}
+
+// A masked strip whose first particle is column i: each lane one particle, its entries in order.
+template <class L>
+[[gnu::always_inline]] inline void maskedThetaSums(const CsrPairWeights& w,
+                                                   const MaskedStrip& strip, const Vec3Field& x,
+                                                   const Vec3Field& v, Index i, CsrThetaSums& out) {
+    constexpr int width = kLanesOf<L>;
+    const Index* delta = w.delta.data() + strip.deltaBegin;
+    for (int u = 0; u < kPairLanes / width; ++u) {
+        L ax[9] = {}, av[9] = {}, aw[3] = {};
+        for (Index e = 0; e < strip.deltaEnd - strip.deltaBegin; ++e) {
+            const Index ad = strip.first + u * width + delta[e];
+            thetaGroup<L>(
+                w.stripPairs.wOwn.data(), w.stripPairs.stride,
+                strip.base + static_cast<std::size_t>(e * kPairLanes + u * width), x, v,
+                [ad](const double* p)
+                    __attribute__((always_inline)) { return loadLanes<L>(p + ad); },
+                ax, av, aw);
+        }
+        const Index col = i + u * width;
+        for (int rc = 0; rc < 9; ++rc)
+            storeLanes(out.x[rc] + col, ax[rc]), storeLanes(out.v[rc] + col, av[rc]);
+        for (int c = 0; c < 3; ++c) storeLanes(out.w[c] + col, aw[c]);
+    }
+}
+
+template <class L>
+[[gnu::always_inline]] inline void csrBlockGradients(const Reference& ref,
+                                                     const CsrPairWeights* staged,
+                                                     const BondView& bonds,
+                                                     const ParticleBlock& block, const Vec3Field& x,
+                                                     const Vec3Field& v, BlockThetaGradients& g) {
+    CsrThetaSums s{};
+    const Index len = block.size();
+    if (staged != nullptr && !bonds.anyDamaged) {
+        for (Index i = 0; i < len; ++i) {
+            const Index t = staged->stripAt[static_cast<std::size_t>(block.particle(i))];
+            if (t >= 0)
+                maskedThetaSums<L>(*staged, staged->strips[static_cast<std::size_t>(t)], x, v, i,
+                                   s);
+        }
+        for (Index i = 0; i < len; ++i) {
+            const auto ia = static_cast<std::size_t>(block.particle(i));
+            gatheredThetaSums<L>(staged->pairs, staged->begin[ia],
+                                 static_cast<Index>(staged->begin[ia + 1] - staged->begin[ia]), x,
+                                 v, i, s);
+        }
+    } else {
+        thread_local StagedPairs scratch;
+        for (Index i = 0; i < len; ++i) {
+            const Index a = block.particle(i);
+            const auto need = static_cast<std::size_t>(stagedCapacity(ref, a));
+            if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
+            const Index size = stagePairs(ref, bonds, a, scratch, 0);
+            gatheredThetaSums<L>(scratch, 0, size, x, v, i, s);
+        }
+    }
     leaveLanes<L>();
+    for (Index i = 0; i < len; ++i) {
+        const auto ia = static_cast<std::size_t>(block.particle(i));
+        const Vec3 xa = x[ia], va = v[ia];
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) {
+                g.x[3 * r + c][i] = s.x[3 * r + c][i] - xa[r] * s.w[c][i];
+                g.v[3 * r + c][i] = s.v[3 * r + c][i] - va[r] * s.w[c][i];
+            }
+    }
 }
 
-void portableStagedSums(const StagedPairs& st, std::size_t begin, Index size, const Vec3Field& x,
-                        const Vec3Field& v, double (&sx)[9], double (&sv)[9], double (&sw)[3]) {
-    stagedSums<Lanes2>(st, begin, size, x, v, sx, sv, sw);
+void portableCsrGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
+                          const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
+                          BlockThetaGradients& g) {
+    csrBlockGradients<Lanes2>(ref, staged, bonds, block, x, v, g);
 }
 
-GSPH_AVX2_TARGET void avx2StagedSums(const StagedPairs& st, std::size_t begin, Index size,
-                                     const Vec3Field& x, const Vec3Field& v, double (&sx)[9],
-                                     double (&sv)[9], double (&sw)[3]) {
-    stagedSums<Lanes4>(st, begin, size, x, v, sx, sv, sw);
+GSPH_AVX2_TARGET void avx2CsrGradients(const Reference& ref, const CsrPairWeights* staged,
+                                       const BondView& bonds, const ParticleBlock& block,
+                                       const Vec3Field& x, const Vec3Field& v,
+                                       BlockThetaGradients& g) {
+    csrBlockGradients<Lanes4>(ref, staged, bonds, block, x, v, g);
 }
 
-GSPH_AVX512_TARGET void avx512StagedSums(const StagedPairs& st, std::size_t begin, Index size,
-                                         const Vec3Field& x, const Vec3Field& v, double (&sx)[9],
-                                         double (&sv)[9], double (&sw)[3]) {
-    stagedSums<Lanes8>(st, begin, size, x, v, sx, sv, sw);
+GSPH_AVX512_TARGET void avx512CsrGradients(const Reference& ref, const CsrPairWeights* staged,
+                                           const BondView& bonds, const ParticleBlock& block,
+                                           const Vec3Field& x, const Vec3Field& v,
+                                           BlockThetaGradients& g) {
+    csrBlockGradients<Lanes8>(ref, staged, bonds, block, x, v, g);
 }
 
 }  // namespace
 
-void stagedThetaGradients(const StagedPairs& st, std::size_t begin, Index size, const Vec3Field& x,
-                          const Vec3Field& v, Index a, Mat3& gradX, Mat3& gradV) {
-    double sx[9], sv[9], sw[3];
+void csrThetaGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
+                       const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
+                       BlockThetaGradients& g) {
     const int width = laneWidth();
     if (width >= 8)
-        avx512StagedSums(st, begin, size, x, v, sx, sv, sw);
+        avx512CsrGradients(ref, staged, bonds, block, x, v, g);
     else if (width >= 4)
-        avx2StagedSums(st, begin, size, x, v, sx, sv, sw);
+        avx2CsrGradients(ref, staged, bonds, block, x, v, g);
     else
-        portableStagedSums(st, begin, size, x, v, sx, sv, sw);
-    const auto ia = static_cast<std::size_t>(a);
-    const Vec3 xa = x[ia], va = v[ia];
-    for (int r = 0; r < 3; ++r)
-        for (int c = 0; c < 3; ++c) {
-            gradX(r, c) = sx[3 * r + c] - xa[r] * sw[c];
-            gradV(r, c) = sv[3 * r + c] - va[r] * sw[c];
-        }
+        portableCsrGradients(ref, staged, bonds, block, x, v, g);
 }
 
 void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,

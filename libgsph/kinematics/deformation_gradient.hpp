@@ -8,7 +8,7 @@
 // (particles/axisymmetry.hpp), set by the callers that build F from these sums.
 // Broken bonds leave the pair list (and G is recomputed), so both properties survive fracture.
 // Three evaluations of the same sum: thetaGradients (one particle, its CSR list, one pair at a
-// time), stagedThetaGradients (one particle, its staged pairs, vectorised across them) and
+// time), csrThetaGradients (a CSR block from its staged pairs, vectorised) and
 // stencilThetaGradients (a block of particles sharing one stencil, SoA x and v, vectorised
 // across the block). Both accumulate Σ_b x_b ⊗ w_ab in list order, then subtract
 // x_a ⊗ Σ_b w_ab; on a symmetric stencil the block sums (x_{a+δ} − x_{a−δ}) ⊗ w over mirrored
@@ -66,13 +66,6 @@ inline void thetaGradients(const Reference& ref, Index a, const Vec3* x, const V
     gradV = sv - v[ia] * sw.transpose();
 }
 
-/// thetaGradients of particle a from its staged pairs (neighbors/staged_pairs.hpp: entries
-/// [begin, begin + size) of st, weights wOwn, which already leave out the bonds that broke and
-/// carry a's interface corrections), vectorised across the pairs in the lanes of core/lanes.hpp
-/// (kPairLanes), so the same bits at every strip width; equal to thetaGradients to round-off.
-void stagedThetaGradients(const StagedPairs& st, std::size_t begin, Index size, const Vec3Field& x,
-                          const Vec3Field& v, Index a, Mat3& gradX, Mat3& gradV);
-
 /// θ-gradients of one block, component-major (row r, column c at [3r + c][i]) so that the
 /// accumulation loops vectorise across the block's particles i.
 struct BlockThetaGradients {
@@ -89,6 +82,15 @@ struct BlockThetaGradients {
         return m;
     }
 };
+
+/// thetaGradients for the particles of a CSR block (row i of g is block.particle(i)) from their
+/// staged pairs (neighbors/staged_pairs.hpp), vectorised across pairs and across the particles
+/// of masked strips: `staged` (the body's, all bonds intact) while no particle is damaged, else
+/// staged here over the bonds that hold, each particle with its interface corrections while it
+/// keeps all its bonds. The same bits at every strip width; equal to thetaGradients to round-off.
+void csrThetaGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
+                       const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
+                       BlockThetaGradients& g);
 
 /// thetaGradients for the particles of a stencil block (kMinStencilRun ≤ size ≤ kMaxBlock;
 /// row i of g is block.particle(i)): b = a + st.delta[k], w_ab = st.gradW[k].

@@ -50,24 +50,54 @@ struct StagedPairs {
     }
 };
 
-/// Every CSR particle's pairs staged once in the reference configuration, all bonds intact:
-/// particle a's run is [begin[a], begin[a + 1]) of `pairs` (empty for stencil particles).
-/// The force and θ-gradient loops read it while no particle is damaged and stage each CSR
-/// particle's pairs themselves otherwise (stagePairs); the two give the same bits. 148 bytes a
-/// pair.
+/// The weights of masked strips' entries (below), per entry and lane: wOwn and wT as in
+/// StagedPairs, g = the table's w_cb (which gQ and gN both are for a same-space pair), W, and
+/// valid (1: the lane has the pair; 0: zeros). The reference offset, h̄ and the hourglass
+/// weight are not stored: the strip loads X, h and V of a + δ contiguously and forms them with
+/// the operations stagePairs uses, so the bits are the same. 88 bytes an entry.
+struct StripPairs {
+    std::vector<double> wOwn, wT, g, W, valid;
+    std::size_t stride = 0;
+    void resize(std::size_t n) {
+        stride = n;
+        W.resize(n), valid.resize(n);
+        wOwn.resize(3 * n), wT.resize(3 * n), g.resize(3 * n);
+    }
+};
+
+/// A masked strip: the CSR particles first … first + kPairLanes − 1 (consecutive, one block),
+/// whose same-space pairs run as a stencil with per-lane weights: entry e has the offset
+/// δ_e = b − a (the union of the lanes' offsets, ascending), lane i its pair (first + i,
+/// first + i + δ_e) or zeros with valid 0 where that particle has no such pair. Entry e, lane i
+/// is entry base + e kPairLanes + i of CsrPairWeights::stripPairs, so a lane's weights and its
+/// neighbours' fields (at a + δ_e) are both contiguous loads.
+struct MaskedStrip {
+    Index first = 0;
+    Index deltaBegin = 0, deltaEnd = 0;  ///< into CsrPairWeights::delta
+    std::size_t base = 0;
+};
+
+/// Every CSR particle's pairs staged once in the reference configuration, all bonds intact: the
+/// same-space pairs of the particles in masked strips (stripAt[a] ≥ 0 for a strip's first
+/// particle) as strips; the rest of particle a's pairs (all of them outside strips) as its run
+/// [begin[a], begin[a + 1]) of `pairs`, gathered. The force and θ-gradient loops read it while
+/// no particle is damaged and stage each CSR particle's pairs themselves otherwise
+/// (stagePairs: the same pairs in one run; the same result to round-off).
 struct CsrPairWeights {
     std::vector<std::size_t> begin;
     StagedPairs pairs;
+    std::vector<Index> stripAt;  ///< per particle: its strip if it is one's first, else −1
+    std::vector<MaskedStrip> strips;
+    std::vector<Index> delta;
+    StripPairs stripPairs;
     std::size_t bytes() const;
 };
 CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks);
 
-/// Staged pairs of c (what its list and the cross lists hold that `bonds` keeps), padded.
-Index stagedCount(const Reference& ref, const BondView& bonds, Index c);
-/// An upper bound of stagedCount for any bonds (the scratch size for c).
+/// An upper bound of the staged pairs of c for any bonds (the scratch size for c).
 Index stagedCapacity(const Reference& ref, Index c);
-/// Stages particle c's pairs into st from entry `begin` (st.stride ≥ begin + stagedCount);
-/// returns the padded count.
+/// Stages all of particle c's pairs that `bonds` keeps into st from entry `begin`
+/// (st.stride ≥ begin + stagedCapacity); returns the count, padded to kPairLanes.
 Index stagePairs(const Reference& ref, const BondView& bonds, Index c, StagedPairs& st,
                  std::size_t begin);
 

@@ -206,6 +206,10 @@ int main(int argc, char** argv) {
     std::printf("peak bytes/particle  %.0f  (process peak RSS growth / particles)\n",
                 (peakResidentBytes() - baseline) / n);
     std::printf("pair-list bytes/particle %.0f\n", sim.reference().pairs.bytes() / n);
+    double staged = 0.0;
+    for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged())
+        staged += static_cast<double>(body.bytes());
+    std::printf("staged CSR pairs bytes/particle %.0f (neighbors/staged_pairs.hpp)\n", staged / n);
     std::printf(
         "phases               kinematics+stress %.1f %%, forces %.1f %%, contact %.1f %%, "
         "other %.1f %%\n",
