@@ -248,46 +248,52 @@ template <int Hourglass, class L, class Load>
     if constexpr (Hourglass == kSecantHourglass) o.s = load(in.hourglassScale);
 }
 
+// Rows j … j + width − 1 of staged weights (component r of a vector weight at r · stride).
+template <class L>
+struct WeightRows {
+    std::size_t stride, j;
+    [[gnu::always_inline]] void vec(const std::vector<double>& v, L (&out)[3]) const {
+        for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * stride + j);
+    }
+    [[gnu::always_inline]] L scalar(const std::vector<double>& v) const {
+        return loadLanes<L>(v.data() + j);
+    }
+};
+
 // The weights of staged entries j … j + width − 1 of a run (StagedPairs: all stored).
 template <class L>
 struct RunWeights {
     const StagedPairs& st;
-    std::size_t j;
-    [[gnu::always_inline]] void load3(const std::vector<double>& v, L (&out)[3]) const {
-        for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * st.stride + j);
-    }
-    [[gnu::always_inline]] void own(L (&w)[3]) const { load3(st.wOwn, w); }
-    [[gnu::always_inline]] void transposed(L (&w)[3]) const { load3(st.wT, w); }
-    [[gnu::always_inline]] void viscous(L (&w)[3]) const { load3(st.gQ, w); }
-    [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { load3(st.gN, w); }
+    WeightRows<L> at;
+    [[gnu::always_inline]] void own(L (&w)[3]) const { at.vec(st.wOwn, w); }
+    [[gnu::always_inline]] void transposed(L (&w)[3]) const { at.vec(st.wT, w); }
+    [[gnu::always_inline]] void viscous(L (&w)[3]) const { at.vec(st.gQ, w); }
+    [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { at.vec(st.gN, w); }
     [[gnu::always_inline]] L hBar(const ForceView&, const PairCentre<L>&, auto&&) const {
-        return loadLanes<L>(st.hBar.data() + j);
+        return at.scalar(st.hBar);
     }
     [[gnu::always_inline]] void offset(const ForceView&, const PairCentre<L>&, auto&&, L (&Y)[3],
                                        L& Y2) const {
-        load3(st.Y, Y);
-        Y2 = loadLanes<L>(st.Y2.data() + j);
+        at.vec(st.Y, Y);
+        Y2 = at.scalar(st.Y2);
     }
     [[gnu::always_inline]] L hourglassWeight(const ForceView&, const PairCentre<L>&, auto&&) const {
-        return loadLanes<L>(st.hgWeight.data() + j);
+        return at.scalar(st.hgWeight);
     }
-    [[gnu::always_inline]] L share() const { return loadLanes<L>(st.share.data() + j); }
-    [[gnu::always_inline]] L valid() const { return loadLanes<L>(st.valid.data() + j); }
+    [[gnu::always_inline]] L share() const { return at.scalar(st.share); }
+    [[gnu::always_inline]] L valid() const { return at.scalar(st.valid); }
 };
 
 // The weights of a masked strip's entries (StripPairs): the reference offset, h̄ and the
-// hourglass weight formed from the neighbours' X, h and V as stagePairs forms them.
+// hourglass weight formed from the neighbours' X, h and V as a run's staging forms them.
 template <class L>
 struct StripWeights {
     const StripPairs& sp;
-    std::size_t j;
-    [[gnu::always_inline]] void load3(const std::vector<double>& v, L (&out)[3]) const {
-        for (std::size_t r = 0; r < 3; ++r) out[r] = loadLanes<L>(v.data() + r * sp.stride + j);
-    }
-    [[gnu::always_inline]] void own(L (&w)[3]) const { load3(sp.wOwn, w); }
-    [[gnu::always_inline]] void transposed(L (&w)[3]) const { load3(sp.wT, w); }
-    [[gnu::always_inline]] void viscous(L (&w)[3]) const { load3(sp.g, w); }
-    [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { load3(sp.g, w); }
+    WeightRows<L> at;
+    [[gnu::always_inline]] void own(L (&w)[3]) const { at.vec(sp.wOwn, w); }
+    [[gnu::always_inline]] void transposed(L (&w)[3]) const { at.vec(sp.wT, w); }
+    [[gnu::always_inline]] void viscous(L (&w)[3]) const { at.vec(sp.g, w); }
+    [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { at.vec(sp.g, w); }
     template <class Fetch>
     [[gnu::always_inline]] L hBar(const ForceView& in, const PairCentre<L>& o,
                                   const Fetch& fetch) const {
@@ -302,10 +308,10 @@ struct StripWeights {
     template <class Fetch>
     [[gnu::always_inline]] L hourglassWeight(const ForceView& in, const PairCentre<L>& o,
                                              const Fetch& fetch) const {
-        return 0.5 * (o.V + fetch(in.V)) * loadLanes<L>(sp.W.data() + j);
+        return 0.5 * (o.V + fetch(in.V)) * at.scalar(sp.W);
     }
     [[gnu::always_inline]] L share() const { return valid(); }
-    [[gnu::always_inline]] L valid() const { return loadLanes<L>(sp.valid.data() + j); }
+    [[gnu::always_inline]] L valid() const { return at.scalar(sp.valid); }
 };
 
 // The pair terms of one group of entries (one per lane) into s, the weights from `wt`
@@ -388,7 +394,7 @@ template <bool Viscous, int Hourglass, class L>
             const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
             const Index* b = st.b.data() + j;
             pairGroup<Viscous, Hourglass, L>(
-                in, RunWeights<L>{st, j}, o,
+                in, RunWeights<L>{st, {st.stride, j}}, o,
                 [b](const double* p)
                     __attribute__((always_inline)) { return gatherLanesAt<L>(p, b); },
                 s[u]);
@@ -425,8 +431,10 @@ template <bool Viscous, int Hourglass, class L>
             const Index ad = a + delta[e];
             pairGroup<Viscous, Hourglass, L>(
                 in,
-                StripWeights<L>{w.stripPairs,
-                                strip.base + static_cast<std::size_t>(e * kPairLanes + u * width)},
+                StripWeights<L>{
+                    w.stripPairs,
+                    {w.stripPairs.stride,
+                     strip.base + static_cast<std::size_t>(e * kPairLanes + u * width)}},
                 o,
                 [ad](const double* p)
                     __attribute__((always_inline)) { return loadLanes<L>(p + ad); },
@@ -466,13 +474,10 @@ template <bool Viscous, int Hourglass, class L>
         }
     } else {
         // Bonds have broken: each particle's surviving pairs staged here, in one run.
-        thread_local StagedPairs scratch;
         for (Index i = 0; i < len; ++i) {
-            const Index c = block.particle(i);
-            const auto need = static_cast<std::size_t>(stagedCapacity(ref, c));
-            if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
-            const Index size = stagePairs(ref, bonds, c, scratch, 0);
-            gatheredPairs<Viscous, Hourglass, L>(in, scratch, 0, size, c, i, s);
+            Index size = 0;
+            const StagedPairs& st = stageIntoScratch(ref, bonds, block.particle(i), size);
+            gatheredPairs<Viscous, Hourglass, L>(in, st, 0, size, block.particle(i), i, s);
         }
     }
     leaveLanes<L>();

@@ -213,13 +213,10 @@ template <class L>
                                  v, i, s);
         }
     } else {
-        thread_local StagedPairs scratch;
         for (Index i = 0; i < len; ++i) {
-            const Index a = block.particle(i);
-            const auto need = static_cast<std::size_t>(stagedCapacity(ref, a));
-            if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
-            const Index size = stagePairs(ref, bonds, a, scratch, 0);
-            gatheredThetaSums<L>(scratch, 0, size, x, v, i, s);
+            Index size = 0;
+            const StagedPairs& st = stageIntoScratch(ref, bonds, block.particle(i), size);
+            gatheredThetaSums<L>(st, 0, size, x, v, i, s);
         }
     }
     leaveLanes<L>();

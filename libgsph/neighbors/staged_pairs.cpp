@@ -115,15 +115,16 @@ Index stageRest(const Reference& ref, const BondView& bonds, Index c, const std:
 
 }  // namespace
 
-Index stagedCapacity(const Reference& ref, Index c) {
+const StagedPairs& stageIntoScratch(const Reference& ref, const BondView& bonds, Index c,
+                                    Index& size) {
+    thread_local StagedPairs scratch;
     const auto ic = static_cast<std::size_t>(c);
     const Index cross = ref.crossOffset.empty() ? 0 : ref.crossOffset[ic + 1] - ref.crossOffset[ic];
-    return ref.pairs.end(c) - ref.pairs.begin(c) + cross + kPairLanes;
-}
-
-Index stagePairs(const Reference& ref, const BondView& bonds, Index c, StagedPairs& st,
-                 std::size_t begin) {
-    return stageRest(ref, bonds, c, nullptr, st, begin);
+    const auto need =
+        static_cast<std::size_t>(ref.pairs.end(c) - ref.pairs.begin(c) + cross + kPairLanes);
+    if (scratch.stride < need) scratch.resize(std::max(need, 2 * scratch.stride));
+    size = stageRest(ref, bonds, c, nullptr, scratch, 0);
+    return scratch;
 }
 
 std::size_t CsrPairWeights::bytes() const {

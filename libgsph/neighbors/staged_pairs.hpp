@@ -54,7 +54,7 @@ struct StagedPairs {
 /// StagedPairs, g = the table's w_cb (which gQ and gN both are for a same-space pair), W, and
 /// valid (1: the lane has the pair; 0: zeros). The reference offset, h̄ and the hourglass
 /// weight are not stored: the strip loads X, h and V of a + δ contiguously and forms them with
-/// the operations stagePairs uses, so the bits are the same. 88 bytes an entry.
+/// the operations a run's staging uses, so the bits are the same. 88 bytes an entry.
 struct StripPairs {
     std::vector<double> wOwn, wT, g, W, valid;
     std::size_t stride = 0;
@@ -82,7 +82,7 @@ struct MaskedStrip {
 /// particle) as strips; the rest of particle a's pairs (all of them outside strips) as its run
 /// [begin[a], begin[a + 1]) of `pairs`, gathered. The force and θ-gradient loops read it while
 /// no particle is damaged and stage each CSR particle's pairs themselves otherwise
-/// (stagePairs: the same pairs in one run; the same result to round-off).
+/// (stageIntoScratch: the same pairs in one run; the same result to round-off).
 struct CsrPairWeights {
     std::vector<std::size_t> begin;
     StagedPairs pairs;
@@ -94,11 +94,10 @@ struct CsrPairWeights {
 };
 CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks);
 
-/// An upper bound of the staged pairs of c for any bonds (the scratch size for c).
-Index stagedCapacity(const Reference& ref, Index c);
-/// Stages all of particle c's pairs that `bonds` keeps into st from entry `begin`
-/// (st.stride ≥ begin + stagedCapacity); returns the count, padded to kPairLanes.
-Index stagePairs(const Reference& ref, const BondView& bonds, Index c, StagedPairs& st,
-                 std::size_t begin);
+/// Stages all of particle c's pairs that `bonds` keeps, in one run from entry 0, into this
+/// thread's buffer (grown as needed, never shrunk: no allocation once it has grown); returns
+/// the buffer, valid until the thread's next call, and the count (padded to kPairLanes) in size.
+const StagedPairs& stageIntoScratch(const Reference& ref, const BondView& bonds, Index c,
+                                    Index& size);
 
 }  // namespace gsph

@@ -168,9 +168,10 @@ TEST_P(CsrPairLanes, StagedOnceOrEachCallEqualThePairFormulasWithTheSameBitsAtEv
         }
         limitLanes(8);
         const double worst = worstAgainst(plain, portable);
-        std::printf("[csr lanes] staged %s (%zu masked strips): against the pair formulas one "
-                    "pair at a time %.1e of max |f|\n",
-                    w != nullptr ? "once" : "each call", staged.strips.size(), worst);
+        std::printf(
+            "[csr lanes] staged %s (%zu masked strips): against the pair formulas one "
+            "pair at a time %.1e of max |f|\n",
+            w != nullptr ? "once" : "each call", staged.strips.size(), worst);
         EXPECT_LT(worst, 3e-15);
     }
     std::printf("[csr lanes] %d particles, %zu cross pairs: bit-identical at %d strip widths\n",
@@ -210,8 +211,9 @@ TEST(CsrPairLanes, ThetaGradientsAreTheListSumsWithTheSameBitsAtEveryWidth) {
             Mat3 gradX, gradV;
             thetaGradients(ref, a, x.data(), v.data(), gradX, gradV, nullptr,
                            ref.pairCorrections(a));
-            worst = std::max({worst, (gradX - portable[2 * ia]).cwiseAbs().maxCoeff() / gradX.norm(),
-                              (gradV - portable[2 * ia + 1]).cwiseAbs().maxCoeff() / gradV.norm()});
+            worst =
+                std::max({worst, (gradX - portable[2 * ia]).cwiseAbs().maxCoeff() / gradX.norm(),
+                          (gradV - portable[2 * ia + 1]).cwiseAbs().maxCoeff() / gradV.norm()});
         }
         std::printf("[csr lanes] θ-gradients staged %s against the list sums: %.1e\n",
                     w != nullptr ? "once" : "each call", worst);
