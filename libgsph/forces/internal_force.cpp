@@ -205,21 +205,14 @@ GSPH_AVX512_TARGET void avx512BlockForce(const ForceView& in, const StressFactor
     stencilBlockForce<Viscous, Hourglass, Lanes8>(in, sf, st, block, force, parts);
 }
 
-// The general path: particle c over its CSR list, vectorised across its pairs. A scalar pass
-// stages the pairs that hold (own list, then the pairs across spaces whose transposed term
-// comes from the other side's list) as SoA weights, each term's weight signed and zero where
-// the term is absent; a vector pass then runs the pair formulas across the staged pairs,
-// gathering the neighbours' fields. The sums run in eight fixed lanes (pair j of the staged
-// list adds into lane j mod 8) reduced in a fixed order at the end, whatever the strip width,
-// so the result is the same for every width. A sum starts at +0 and so never becomes −0: adding
-// a zero term (absent, or a lane past the list's end) leaves it unchanged bit for bit.
-//
-// Weights (DESIGN §4, §6): sumW takes w_cb (with c's interface corrections when c keeps all
-// its bonds); fK takes K_b wT, wT = w_cb − (the mirror's correction) for a same-space pair
-// (0 across spaces), −(w_bc + b's correction) for a pair of b's list across spaces; fN takes
-// q N_b gN (gN = ∇W_cb same-space, 0 across, −w_bc from b's list); sumQW takes q gQ (own list
-// only); the hourglass force −κ y (y = x_b − x_c) counts in full within a space and half
-// across (the other half on b's side).
+// The general path: the CSR particles, from their staged pairs (neighbors/staged_pairs.hpp
+// says what each weight is, DESIGN §4, §6): masked strips (8 particles in the lanes, their
+// same-space pairs as a stencil with per-lane weights) and gathered runs (one particle's other
+// pairs, 8 at a time in the lanes). A strip lane sums its entries in order; a run's sums go into
+// kPairLanes fixed lanes reduced in a fixed order (core/lanes.hpp); so every strip width gives
+// the same bits. A sum starts at +0 and so never becomes −0: a zero weight (a term the pair does
+// not have) adds nothing, bit for bit, and lanes without a pair are selected away.
+
 // Mask type of strip type L (what a comparison of two L yields).
 template <class L>
 using MaskOf = decltype(L{} < L{});

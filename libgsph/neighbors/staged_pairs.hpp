@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: MIT
 // The pairs of the CSR path staged as SoA weights, so that the pair loops of particles off the
-// stencil blocks (overset spaces, the band, broken bonds) run across a particle's pairs in SIMD
-// lanes (forces/internal_force.cpp, kinematics/deformation_gradient.hpp).
+// stencil blocks (overset spaces, the band, broken bonds) run in SIMD lanes
+// (forces/internal_force.cpp, kinematics/deformation_gradient.hpp): across one particle's pairs
+// (a run, StagedPairs) or across 8 consecutive particles (a masked strip, StripPairs).
 //
-// A particle's staged pairs are its own list's pairs that hold, then the pairs across spaces
-// whose transposed term comes from the other side's list (Reference::crossPair), padded to a
-// multiple of kPairLanes (core/lanes.hpp). Per pair, with w_cb = ω∇W_cb the table's weight and
-// δw the interface corrections (overset/interface_weights.hpp), DESIGN §4 and §6:
+// A particle's run holds its own list's pairs that hold (less those its masked strip takes),
+// then the pairs across spaces whose transposed term comes from the other side's list
+// (Reference::crossPair), padded to a multiple of kPairLanes (core/lanes.hpp). Per pair, with
+// w_cb = ω∇W_cb the table's weight and δw the interface corrections
+// (overset/interface_weights.hpp), DESIGN §4 and §6:
 //   wOwn  w_cb + c's correction (when c keeps all its bonds): F's sum and the stress sum Σ w_cb;
 //         0 for a pair of the other side's list;
 //   wT    the transposed stress term's weight: w_cb − the mirror's correction (same space,
