@@ -16,7 +16,8 @@ struct HistoryColumn {
 };
 
 // The columns of history.csv, in order: the run's clock, the energy channels (the total is
-// kinetic + internal + every dissipated/stored work − external work, conserved), momentum.
+// kinetic + internal + every dissipated/stored work − external work, conserved; with softening
+// bonds it includes their cohesive work, kCohesiveColumn), momentum.
 const HistoryColumn kHistoryColumns[] = {
     {"time", "%.9e", [](const State& s, const EnergyReport&) { return s.time; }},
     {"step", "%.0f", [](const State& s, const EnergyReport&) { return double(s.step); }},
@@ -38,6 +39,10 @@ const HistoryColumn kHistoryColumns[] = {
     {"momentum_y", "%.9e", [](const State&, const EnergyReport& e) { return e.momentum[1]; }},
     {"momentum_z", "%.9e", [](const State&, const EnergyReport& e) { return e.momentum[2]; }},
 };
+
+// In runs with softening bonds only, after the run's columns: their cohesive work.
+const HistoryColumn kCohesiveColumn = {
+    "cohesive_work", "%.9e", [](const State&, const EnergyReport& e) { return e.cohesiveWork; }};
 
 struct WallColumn {
     const char* suffix;  ///< the column is wall_<name>_<suffix>
@@ -99,10 +104,11 @@ std::string columnName(const std::string& name) {
 }
 
 History::History(std::filesystem::path path, const std::vector<std::string>& bodies,
-                 std::vector<Wall> walls, bool contactBetweenBodies)
+                 std::vector<Wall> walls, bool contactBetweenBodies, bool softeningBonds)
     : bodies_(columnNamesOf(bodies)),
       walls_(std::move(walls)),
       contact_(contactBetweenBodies),
+      cohesive_(softeningBonds),
       table_(std::move(path), columnNames()) {
     for (std::size_t b = 0; b < bodies.size(); ++b) {
         for (std::size_t other = 0; other < b; ++other)
@@ -117,6 +123,7 @@ History::History(std::filesystem::path path, const std::vector<std::string>& bod
 std::vector<std::string> History::columnNames() const {
     std::vector<std::string> names;
     for (const HistoryColumn& c : kHistoryColumns) names.emplace_back(c.name);
+    if (cohesive_) names.emplace_back(kCohesiveColumn.name);
     for (const Wall& w : walls_)
         for (const WallColumn& c : kWallColumns)
             names.push_back("wall_" + columnName(w.name) + "_" + c.suffix);
@@ -145,6 +152,7 @@ void History::add(const State& state, const EnergyReport& energy,
                                " contact forces for " + std::to_string(bodies) + " bodies");
     const auto cell = [&](const char* format, double value) { table_.cell(format, value); };
     for (const HistoryColumn& c : kHistoryColumns) cell(c.format, c.value(state, energy));
+    if (cohesive_) cell(kCohesiveColumn.format, kCohesiveColumn.value(state, energy));
     for (std::size_t w = 0; w < walls_.size(); ++w)
         for (const WallColumn& c : kWallColumns)
             cell(c.format, c.value(state, walls_[w], wallForces[w]));

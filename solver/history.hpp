@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // history.csv of a run (docs/formats.md): rows at snapshots and history intervals, the columns
-// defined in lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum),
+// defined in lists in history.cpp — kHistoryColumns (the run's: clock, energy, momentum; with
+// softening bonds kCohesiveColumn after them),
 // kWallColumns (repeated for every wall, named wall_<name>_<suffix>), kContactColumns (for every
 // pair of bodies in contact, contact_<name>_<name>_<suffix>) and kBodyColumns (repeated for every
 // body, named body_<name>_<suffix>) — adding a column is one line there and one line in
@@ -29,9 +30,11 @@ class History {
     /// (its physical group's, or its id), which follow the walls'. `walls`: the run's walls, in
     /// order, their columns after the run's. `contactBetweenBodies`: the run has contact between
     /// its bodies (contactBetweenBodies, contact/contact_stages.hpp): a force column per pair of
-    /// bodies, after the walls'. Throws InputError if two bodies' names make the same columns.
+    /// bodies, after the walls'. `softeningBonds`: some body's bonds soften (a fracture
+    /// energy): their cohesive work follows the run's columns. Throws InputError if two bodies'
+    /// names make the same columns.
     History(std::filesystem::path path, const std::vector<std::string>& bodies,
-            std::vector<Wall> walls, bool contactBetweenBodies);
+            std::vector<Wall> walls, bool contactBetweenBodies, bool softeningBonds = false);
 
     /// The column names, in the file's order.
     std::vector<std::string> columnNames() const;
@@ -50,6 +53,7 @@ class History {
     std::vector<std::string> bodies_;  ///< column-safe names, in body order
     std::vector<Wall> walls_;
     bool contact_ = false;
+    bool cohesive_ = false;
     CsvTable table_;
 };
 

@@ -17,8 +17,8 @@ using Keys = std::vector<std::string>;
 
 // Keys every model takes; `notes` and `sources` document a material (the library's files cite
 // a source for every constant) and have no effect on the run.
-const Keys kCommonKeys = {"model",        "density", "youngs_modulus", "poisson_ratio",
-                          "bond_stretch", "notes",   "sources"};
+const Keys kCommonKeys = {"model",        "density",         "youngs_modulus", "poisson_ratio",
+                          "bond_stretch", "fracture_energy", "notes",          "sources"};
 // Keys of a plastic solid besides its strength model's: the parts it composes
 // (libgsph/materials/plastic_solid.hpp).
 const Keys kPlasticPartKeys = {"eos", "damage", "damage_length", "damage_size"};
@@ -234,6 +234,11 @@ void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& e
         keys.fail("poisson_ratio", std::string(e.what()) + " in material '" + m.name + "'");
     }
     m.bondStretch = keys.number("bond_stretch", 0.0, Sign::NonNegative);
+    m.fractureEnergy = keys.number("fracture_energy", 0.0, Sign::NonNegative);
+    if (m.fractureEnergy > 0.0 && m.bondStretch == 0.0)
+        keys.fail("fracture_energy", "'fracture_energy' in " + where +
+                                         " needs 'bond_stretch' > 0: the stretch at which its "
+                                         "bonds start to soften");
     ModelParts parts{keys, where, m.name, m.elastic, {}, std::nullopt};
     if (model->plastic) {
         if (keys.has("damage")) {

@@ -29,6 +29,9 @@ struct MaterialSpec {
     std::optional<Material> material;  ///< the model, built and validated by the parser
     /// εmax of brittle bond failure by stretch (DESIGN §5, key `bond_stretch`); 0 = no bonds break.
     double bondStretch = 0.0;
+    /// G0 [J/m²] of softening bonds (key `fracture_energy`; libgsph/forces/cohesive_bonds.hpp):
+    /// > 0 makes the bonds that break by stretch soften; 0 = they break sharply.
+    double fractureEnergy = 0.0;
     std::filesystem::path file;  ///< the material file it came from (empty: written inline)
     int line = 0;
 };

@@ -34,6 +34,7 @@ struct BodySetup {
     std::vector<double> density;
     std::vector<Vec3> velocity;
     std::vector<double> bondStretch;          ///< εmax per body (0: its bonds never break)
+    std::vector<double> fractureEnergy;       ///< G0 per body (0: its bonds break sharply)
     std::vector<FailedBondRule> failedBonds;  ///< per body: bonds of failed particles
 };
 
@@ -73,6 +74,7 @@ BodySetup matchBodies(const CaseConfig& c, const ParticleFile& file) {
         setup.density.push_back(m->elastic.density);
         setup.velocity.push_back(spec->velocity);
         setup.bondStretch.push_back(m->bondStretch);
+        setup.fractureEnergy.push_back(m->fractureEnergy);
         setup.failedBonds.push_back(spec->failedBonds == "either" ? FailedBondRule::Either
                                     : spec->failedBonds == "both" ? FailedBondRule::Both
                                     : spec->failedBonds == "cut"  ? FailedBondRule::Cut
@@ -216,8 +218,10 @@ class RunOutputs {
           ref_(sim.reference()),
           inputs_(std::move(inputs)),
           provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
-          history_(options.runDir / "history.csv", bodyNamesOf(file, sim), wallsOf(c),
-                   contactBetweenBodies(sim.options().contact, sim.bodies().size())),
+          history_(
+              options.runDir / "history.csv", bodyNamesOf(file, sim), wallsOf(c),
+              contactBetweenBodies(sim.options().contact, sim.bodies().size()),
+              std::ranges::any_of(sim.options().fractureEnergy, [](double g) { return g > 0.0; })),
           probes_(options.runDir / "probes.csv", findProbes(c, ref_, file)),
           progress_(options.progress, c.endTime, ref_.size()) {
         log_.beforePrint = [this] { progress_.clear(); };
@@ -398,6 +402,7 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
     solverOptions.hourglassModulus = c.hourglassModulus;
     solverOptions.minTimeStepRatio = c.minDtRatio;
     solverOptions.bondStretch = bodies.bondStretch;
+    solverOptions.fractureEnergy = bodies.fractureEnergy;
     for (const PrecrackSpec& p : c.precracks)
         solverOptions.precracks.push_back({p.corner, p.edge1, p.edge2});
     solverOptions.failedBonds = bodies.failedBonds;
@@ -469,10 +474,10 @@ void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
                   "external work %.3e J, plastic work %.3e J, damage dissipation %.3e J, "
-                  "fracture energy %.3e J, contact energy %.3e J",
+                  "fracture energy %.3e J, cohesive work %.3e J, contact energy %.3e J",
                   e.kinetic, e.elastic, e.hourglassWork, e.viscousWork,
                   e.boundaryWork + e.externalWork, e.plasticWork, e.damageDissipation,
-                  e.fractureEnergy, e.contactEnergy);
+                  e.fractureEnergy, e.cohesiveWork, e.contactEnergy);
     log.add(line);
 }
 

@@ -81,10 +81,12 @@ Index breakBondsAcross(const Reference& ref, const std::vector<CrackPatch>& patc
 }
 
 BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle,
-                           std::vector<FailedBondRule> failedRuleByParticle, bool precracked)
+                           std::vector<FailedBondRule> failedRuleByParticle, bool precracked,
+                           std::vector<std::uint8_t> cohesiveByParticle)
     : ref_(ref),
       stretch_(std::move(stretchByParticle)),
       failedRule_(std::move(failedRuleByParticle)),
+      cohesive_(std::move(cohesiveByParticle)),
       enabled_(precracked) {
     if (stretch_.size() != static_cast<std::size_t>(ref.size()))
         throw InputError("bond stretch limits: " + std::to_string(stretch_.size()) +
@@ -93,6 +95,9 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
     if (failedRule_.size() != stretch_.size())
         throw InputError("failed-bond rules: " + std::to_string(failedRule_.size()) +
                          " values for " + std::to_string(ref.size()) + " particles");
+    if (!cohesive_.empty() && cohesive_.size() != stretch_.size())
+        throw InputError("cohesive flags: " + std::to_string(cohesive_.size()) + " values for " +
+                         std::to_string(ref.size()) + " particles");
     for (FailedBondRule rule : failedRule_) {
         if (rule != FailedBondRule::Keep) enabled_ = true;
         if (rule == FailedBondRule::Cut) anyCut_ = true;
@@ -248,25 +253,28 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
         if (limit == 0.0 && rule == FailedBondRule::Keep) return;
         const bool selfFailed = failed(ia);
         const double factor = (1.0 + limit) * (1.0 + limit);
-        const auto breaks = [&](Index k) {
-            if (intact[k] == 0) return false;
+        enum Cause : std::uint8_t { Holds, ByRule, ByStretch };
+        const auto cause = [&](Index k) {
+            if (intact[k] == 0) return Holds;
             const auto b = static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)]);
             if ((rule == FailedBondRule::Either || rule == FailedBondRule::Cut) &&
                 (selfFailed || failed(b)))
-                return true;
-            if (rule == FailedBondRule::Cut && cutting && cutByFailed(ia, b)) return true;
-            if (rule == FailedBondRule::Both && selfFailed && failed(b)) return true;
-            return limit > 0.0 && stretched(ia, k, factor);
+                return ByRule;
+            if (rule == FailedBondRule::Cut && cutting && cutByFailed(ia, b)) return ByRule;
+            if (rule == FailedBondRule::Both && selfFailed && failed(b)) return ByRule;
+            return limit > 0.0 && stretched(ia, k, factor) ? ByStretch : Holds;
         };
         bool any = false;
-        for (Index k = P.begin(a); k < P.end(a) && !any; ++k) any = breaks(k);
+        for (Index k = P.begin(a); k < P.end(a) && !any; ++k) any = cause(k) != Holds;
         if (!any) return;
         released_[ia] = internalPower(state, a);  // over the old bonds, with the old G
+        const bool softens = !cohesive_.empty() && cohesive_[ia] != 0;
         for (Index k = P.begin(a); k < P.end(a); ++k) {
-            if (breaks(k)) {
-                intact[k] = 0;
-                ++changed_[ia];
-            }
+            const Cause c = cause(k);
+            if (c == Holds) continue;
+            if (c == ByStretch && softens) startSoftening(state, ia, k);
+            intact[k] = 0;
+            ++changed_[ia];
         }
     });
     if (cutting)
@@ -292,6 +300,20 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
         ref_.size(), 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; },
         partialSums_);
     return result;
+}
+
+// The normal stress across the bond and its stretch, from the end of the lower index (both
+// directions of the pair write the same bits); a bond not in tension breaks without cohesion.
+void BrittleBonds::startSoftening(State& state, std::size_t ia, Index k) const {
+    const auto ik = static_cast<std::size_t>(k);
+    const auto ib = static_cast<std::size_t>(ref_.pairs.neighbor[ik]);
+    const std::size_t lo = std::min(ia, ib), hi = std::max(ia, ib);
+    const Vec3 d = state.x[hi] - state.x[lo];
+    const double dd = d.squaredNorm();
+    const double traction = d.dot(0.5 * (state.cauchy[lo] + state.cauchy[hi]) * d) / dd;
+    if (!(traction > 0.0)) return;
+    state.cohesiveTraction[ik] = traction;
+    state.cohesiveStretch[ik] = std::sqrt(dd / (ref_.X[hi] - ref_.X[lo]).squaredNorm()) - 1.0;
 }
 
 BondView BrittleBonds::view(const State& state) const {

@@ -49,6 +49,13 @@
 // negative of that change is the energy the broken pairs take out of the motion, booked as
 // fracture energy. (The overset band's difference form is outside this identity.)
 //
+// Softening bonds (forces/cohesive_bonds.hpp): in a body with a fracture energy, a bond broken
+// by its stretch leaves the pair sums as any other, and its pair starts to carry a cohesive
+// force: the call records in State::cohesiveTraction the normal stress n·σ̄·n across it (σ̄ the
+// mean of the two particles' σ_n, n along x_b − x_a; > 0 only, a bond not in tension breaks
+// without cohesion) and in State::cohesiveStretch its stretch. Bonds broken by failed particles
+// or initial cracks carry none.
+//
 // Initial cracks (a sharp notch, docs/theory.md "Initial cracks"): the bonds of every pair whose
 // reference segment X_a → X_b crosses a planar patch start broken (breakBondsAcross); attach()
 // then derives G, damaged and detached exactly as after a break. A reference position on the
@@ -131,10 +138,13 @@ class BrittleBonds {
     /// `stretchByParticle`: εmax of each particle's body (0 = unbreakable), from the body ranges;
     /// `failedRuleByParticle` (empty: Keep everywhere): the particle's body's FailedBondRule.
     /// `precracked`: the state may start with broken bonds (initial cracks), so the bonds are
-    /// tracked even when no body can break. Throws InputError on a negative or non-finite εmax
-    /// or a size mismatch.
+    /// tracked even when no body can break. `cohesiveByParticle` (empty: none): 1 where the
+    /// particle's body has a fracture energy, so that its bonds broken by stretch soften (the
+    /// state then holds cohesiveTraction and cohesiveStretch, one per pair). Throws InputError on
+    /// a negative or non-finite εmax or a size mismatch.
     BrittleBonds(const Reference& ref, std::vector<double> stretchByParticle,
-                 std::vector<FailedBondRule> failedRuleByParticle = {}, bool precracked = false);
+                 std::vector<FailedBondRule> failedRuleByParticle = {}, bool precracked = false,
+                 std::vector<std::uint8_t> cohesiveByParticle = {});
 
     bool enabled() const { return enabled_; }
 
@@ -172,12 +182,15 @@ class BrittleBonds {
 
   private:
     void refreshParticle(const State& state, Index a);
+    /// Records the softening of the pair at CSR entry k of particle ia (see above).
+    void startSoftening(State& state, std::size_t ia, Index k) const;
     /// K : ∇v of particle a over its surviving bonds with its current G (0 when detached).
     double internalPower(const State& state, Index a) const;
 
     const Reference& ref_;
     std::vector<double> stretch_;             ///< εmax per particle
     std::vector<FailedBondRule> failedRule_;  ///< per particle
+    std::vector<std::uint8_t> cohesive_;      ///< per particle (empty: none), see above
     bool enabled_ = false;
     std::vector<Mat3> G_;
     std::vector<std::uint8_t> damaged_, detached_;

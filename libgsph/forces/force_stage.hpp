@@ -7,6 +7,7 @@
 //   force      every stage adds its force on each particle [N]
 //   viscous,   the parts of the internal force that artificial viscosity and hourglass control
 //   hourglass  contribute (their power Σ f·v is booked as viscous and hourglass work)
+//   cohesive   the forces of softening bonds (forces/cohesive_bonds.hpp): −Σ f·v is their work
 //   external   forces from outside the bodies (loads, wall friction): Σ f·v is external work
 //   frequency2 ω_a² of stiff springs (contact) that the stable time step must resolve [1/s²]
 // A channel other than `force` is sized only when a stage asks for it (needs()); a stage writes
@@ -26,18 +27,20 @@ namespace gsph {
 struct ForceParts {
     std::vector<Vec3> viscous;
     std::vector<Vec3> hourglass;
+    std::vector<Vec3> cohesive;
 };
 
 struct ForceChannels {
     std::vector<Vec3> force;
-    ForceParts parts;  ///< viscous, hourglass
+    ForceParts parts;  ///< viscous, hourglass, cohesive
     std::vector<Vec3> external;
     std::vector<double> frequency2;
 };
 
 /// The channels a stage writes beyond `force`.
 struct StageNeeds {
-    bool viscous = false, hourglass = false, external = false, frequency2 = false;
+    bool viscous = false, hourglass = false, cohesive = false, external = false,
+         frequency2 = false;
 };
 
 /// What a stage reports of one force evaluation besides its forces.

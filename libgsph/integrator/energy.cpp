@@ -70,6 +70,7 @@ EnergyReport measureEnergy(const Reference& ref, const State& state,
     e.boundaryWork = state.ledger.boundaryWork;
     e.damageDissipation = state.ledger.damageDissipation;
     e.fractureEnergy = state.ledger.fractureEnergy;
+    e.cohesiveWork = state.ledger.cohesiveWork;
     e.contactEnergy = state.ledger.contactEnergy;
     e.externalWork = state.ledger.externalWork;
     return e;

@@ -4,8 +4,8 @@
 //   energy per current volume, V_a the quadrature volume of DESIGN §4); plastic work = Σ of
 //   the particles' (State::plasticWork); the ledger's other works (integrated by the
 //   integrator); the contact springs' potential. Balance:
-//   kinetic + elastic + viscous + hourglass + plastic + damage + fracture + contact − boundary
-//   − external = const.
+//   kinetic + elastic + viscous + hourglass + plastic + damage + fracture + cohesive + contact
+//   − boundary − external = const.
 // Kinetic, elastic and plastic energy and momentum are summed body by body, and the run's are
 // the sums of the bodies' in body order: the bodies' shares add up to the run's exactly.
 #pragma once
@@ -33,16 +33,17 @@ struct EnergyReport {
     double plasticWork = 0.0;        ///< dissipated by plastic flow
     double damageDissipation = 0.0;  ///< elastic energy lost by failing particles
     double fractureEnergy = 0.0;     ///< elastic energy released by brittle bond failure
+    double cohesiveWork = 0.0;       ///< taken by the cohesive forces of softening bonds
     double contactEnergy = 0.0;      ///< potential of the penalty springs (bodies, walls)
     double externalWork = 0.0;       ///< work of gravity, set forces and walls on the bodies
     Vec3 momentum = Vec3::Zero();
     /// Per body, in body order: kinetic, elastic, plastic work, momentum sum to the above.
     std::vector<BodyEnergy> bodies;
     /// Conserved total: kinetic + elastic + viscous + hourglass + plastic + damage + fracture
-    /// + contact − boundary − external.
+    /// + cohesive + contact − boundary − external.
     double total() const {
         return kinetic + elastic + viscousWork + hourglassWork + plasticWork + damageDissipation +
-               fractureEnergy + contactEnergy - boundaryWork - externalWork;
+               fractureEnergy + cohesiveWork + contactEnergy - boundaryWork - externalWork;
     }
 };
 

@@ -25,6 +25,7 @@ LedgerPowers measurePowers(const Reference& ref, const State& state, const Force
     LedgerPowers p;
     p.viscous = powerOf(channels.parts.viscous, state, partialSums);
     p.hourglass = powerOf(channels.parts.hourglass, state, partialSums);
+    p.cohesive = powerOf(channels.parts.cohesive, state, partialSums);
     p.boundary = reactionPower(constraints, ref, state, channels.force);
     p.external = channels.external.empty()
                      ? stagePower
@@ -35,6 +36,7 @@ LedgerPowers measurePowers(const Reference& ref, const State& state, const Force
 void startLedger(EnergyLedger& ledger, const LedgerPowers& powers) {
     ledger.viscousPower = powers.viscous;
     ledger.hourglassPower = powers.hourglass;
+    ledger.cohesivePower = powers.cohesive;
     ledger.boundaryPower = powers.boundary;
     ledger.externalPower = powers.external;
 }
@@ -43,6 +45,7 @@ void bookStep(EnergyLedger& L, const LedgerPowers& p, double dt) {
     L.externalWork += 0.5 * dt * (L.externalPower + p.external);
     L.viscousWork -= 0.5 * dt * (L.viscousPower + p.viscous);
     L.hourglassWork -= 0.5 * dt * (L.hourglassPower + p.hourglass);
+    L.cohesiveWork -= 0.5 * dt * (L.cohesivePower + p.cohesive);
     L.boundaryWork += 0.5 * dt * (L.boundaryPower + p.boundary);
     startLedger(L, p);
 }

@@ -4,6 +4,7 @@
 // (forces/force_stage.hpp), not from the stages:
 //   viscous   Σ f_visc·v      booked as viscous work (the dissipation is −∫ P dt)
 //   hourglass Σ f_hg·v        booked as hourglass work (likewise)
+//   cohesive  Σ f_coh·v       booked as cohesive work (likewise: the softening bonds' take)
 //   external  Σ f_ext·v + the stages' scalar external power (a moving wall's push)
 //   boundary  the reactions' power at constrained particles (boundary/constraints.hpp)
 #pragma once
@@ -18,7 +19,7 @@
 namespace gsph {
 
 struct LedgerPowers {
-    double viscous = 0.0, hourglass = 0.0, boundary = 0.0, external = 0.0;  ///< [W]
+    double viscous = 0.0, hourglass = 0.0, boundary = 0.0, external = 0.0, cohesive = 0.0;  ///< [W]
 };
 
 /// The powers at the state's time and velocities. `stagePower`: Σ of the stages' reported

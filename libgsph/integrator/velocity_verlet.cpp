@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
+#include "forces/cohesive_bonds.hpp"
 #include "forces/hoop_stress_stage.hpp"
 #include "forces/internal_force_stage.hpp"
 #include "integrator/power_ledger.hpp"
@@ -39,6 +40,14 @@ void checkOptions(const SolverOptions& o) {
         throw InputError("the viscosity switch's Mach number M0 must be ≥ 0 (0 = off)");
 }
 
+// 1 per particle of a body with a fracture energy; empty when no body has one.
+std::vector<std::uint8_t> softeningFlags(const Reference& ref, const std::vector<double>& g0) {
+    if (std::none_of(g0.begin(), g0.end(), [](double g) { return g != 0.0; })) return {};
+    std::vector<std::uint8_t> flags;
+    for (double g : byParticle(ref, g0, 0.0)) flags.push_back(g != 0.0 ? 1 : 0);
+    return flags;
+}
+
 TimeStepRule timeStepRule(const SolverOptions& o) {
     return {o.cfl, o.fixedTimeStep, o.minTimeStepRatio};
 }
@@ -55,7 +64,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       options_(options),
       bonds_(ref, byParticle(ref, options_.bondStretch, 0.0),
              byParticle(ref, options_.failedBonds, FailedBondRule::Keep),
-             !options_.precracks.empty()),
+             !options_.precracks.empty(), softeningFlags(ref, options_.fractureEnergy)),
       stress_(ref, bodies_, bonds_, options_.viscosity, options_.hourglassModulus) {
     checkOptions(options_);
     checkConstraints(constraints_, ref);
@@ -72,6 +81,10 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
         ref, std::move(youngsModulus), stress_.fields(), stress_.factors(), stress_.blocks(),
         stress_.staged(), options_.viscosity, options_.hourglass, options_.hourglassModulus,
         bonds_));
+    if (softeningBonds())
+        stages_.push_back(
+            std::make_shared<CohesiveBondStage>(ref, byParticle(ref, options_.bondStretch, 0.0),
+                                                byParticle(ref, options_.fractureEnergy, 0.0)));
     if (ref.dim.axisymmetric) stages_.push_back(std::make_shared<HoopStressStage>(ref));
     for (auto& stage :
          makeContactStages(ref, pWaveSpeed2, bodies_.size(), options_.contact, std::move(walls)))
@@ -85,11 +98,13 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
         const StageNeeds s = stage->needs();
         needs.viscous |= s.viscous;
         needs.hourglass |= s.hourglass;
+        needs.cohesive |= s.cohesive;
         needs.external |= s.external;
         needs.frequency2 |= s.frequency2;
     }
     if (needs.viscous) channels_.parts.viscous.assign(n, Vec3::Zero());
     if (needs.hourglass) channels_.parts.hourglass.assign(n, Vec3::Zero());
+    if (needs.cohesive) channels_.parts.cohesive.assign(n, Vec3::Zero());
     if (needs.external) channels_.external.assign(n, Vec3::Zero());
     if (needs.frequency2) channels_.frequency2.assign(n, 0.0);
 }
@@ -115,7 +130,15 @@ void VelocityVerlet::computeAccelerations(State& state) {
     });
 }
 
+bool VelocityVerlet::softeningBonds() const {
+    return !softeningFlags(ref_, options_.fractureEnergy).empty();
+}
+
 void VelocityVerlet::initialize(State& state) {
+    if (softeningBonds() && state.cohesiveTraction.empty()) {
+        state.cohesiveTraction.assign(state.bondIntact.size(), 0.0);
+        state.cohesiveStretch.assign(state.bondIntact.size(), 0.0);
+    }
     // Initial cracks break their bonds before anything reads them; a resumed state carries them.
     if (!options_.precracks.empty()) breakBondsAcross(ref_, options_.precracks, state.bondIntact);
     bonds_.attach(state);

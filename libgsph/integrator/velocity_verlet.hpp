@@ -10,8 +10,8 @@
 //      elastic energy its stress held as fracture energy
 //   5. a_{n+1} = f(x_{n+1}, σ_{n+1}, v_{n+½}) / m, f the sum of the force stages in their order
 //      (forces/force_stage.hpp): the internal force with viscosity and hourglass control,
-//      penalty contact between bodies, rigid walls (friction from v_{n+½}), gravity and set
-//      forces, then the stages the caller added (addStage)
+//      the softening bonds' cohesive forces, penalty contact between bodies, rigid walls (friction
+//      from v_{n+½}), gravity and set forces, then the stages the caller added (addStage)
 //   6. v_{n+1} = v_{n+½} + ½Δt a_{n+1}                   (then constraints at t_{n+1})
 //   7. Δt_{n+1} by integrator/time_step.hpp
 // Steps 3–4 are integrator/stress_update.hpp; the energy ledger is integrator/power_ledger.hpp.
@@ -54,6 +54,10 @@ struct SolverOptions {
     /// εmax of brittle bonds per body id (failure/brittle_bonds.hpp); a body without an entry,
     /// or with 0, never breaks.
     std::vector<double> bondStretch;
+    /// Fracture energy G0 [J/m²] per body id: > 0 makes the body's bonds that break by stretch
+    /// soften (forces/cohesive_bonds.hpp; εmax is then their onset). A body without an entry,
+    /// or with 0, breaks them sharply.
+    std::vector<double> fractureEnergy;
     /// Initial cracks: the bonds crossing any of these patches start broken (at initialize(),
     /// failure/brittle_bonds.hpp), in any body, breakable or not.
     std::vector<CrackPatch> precracks;
@@ -112,6 +116,8 @@ class VelocityVerlet {
 
   private:
     void computeAccelerations(State& state);
+    /// True when some body's bonds soften (SolverOptions::fractureEnergy).
+    bool softeningBonds() const;
 
     const Reference& ref_;
     std::vector<BodyRange> bodies_;

@@ -185,8 +185,11 @@ Checkpoint readCheckpoint(const std::filesystem::path& path) {
                       : dataset,
                   array);
     });
-    c.state.forEachScalar(
-        [&](const char* name, auto& value) { readScalar(f, kScalarGroup + name, value); });
+    c.state.forEachScalar([&](const char* name, auto& value) {
+        const std::string dataset = kScalarGroup + name;
+        if (State::scalarSinceMinor(name) > 0 && !f.exists(dataset)) return;  // an older file
+        readScalar(f, dataset, value);
+    });
     c.run = readRunRecord(f);
     return c;
 }

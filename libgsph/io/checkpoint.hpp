@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Checkpoint files (DESIGN §1): the whole State of a run, so that a restart continues it bit
 // for bit, plus what the run's driver needs to resume its own schedule. HDF5, format
-// "gsph-checkpoint" 3.1 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
+// "gsph-checkpoint" 3.3 (layout in docs/formats.md). Written atomically (io/atomic_file.hpp).
 //
 //   /state/NAME            every array of State::forEachArray under its field's name
 //                          (particles/fields.hpp), with its `units` attribute (Vec3: N×3,
@@ -32,9 +32,11 @@ inline constexpr const char* kCheckpointFormat = "gsph-checkpoint";
 /// 3.0: the contact force between each pair of bodies (/state/contact_force). 3.1: the arrays
 /// carry `units`, the stress is /state/stress as in snapshots (3.0's /state/cauchy is read), and
 /// /state/damage_driver holds nonlocal damage's driver (a 3.0 file reads it as zeros). 3.2:
-/// /state/contact_separation of self-contact (an older file has none: read as empty).
+/// /state/contact_separation of self-contact (an older file has none: read as empty). 3.3:
+/// /state/cohesive_traction, /state/cohesive_stretch and the ledger's cohesive work and power of
+/// softening bonds (an older file has none: read as empty and 0).
 inline constexpr int kCheckpointFormatMajor = 3;
-inline constexpr int kCheckpointFormatMinor = 2;
+inline constexpr int kCheckpointFormatMinor = 3;
 
 /// A file the run was built from: a restart refuses to continue if its bytes changed.
 struct CheckpointInput {

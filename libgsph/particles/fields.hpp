@@ -85,6 +85,19 @@ inline constexpr Field kContactSeparation{.name = "contact_separation",
                                           .extent = Extent::Pair,
                                           .savedIn = kCheckpoint,
                                           .checkpointSinceMinor = 2};
+/// Per CSR pair, in bodies with a fracture energy: the normal stress across a bond when it broke
+/// by stretch (> 0: it softens), and the largest stretch it has had since
+/// (forces/cohesive_bonds.hpp).
+inline constexpr Field kCohesiveTraction{.name = "cohesive_traction",
+                                         .unit = "Pa",
+                                         .extent = Extent::Pair,
+                                         .savedIn = kCheckpoint,
+                                         .checkpointSinceMinor = 3};
+inline constexpr Field kCohesiveStretch{.name = "cohesive_stretch",
+                                        .unit = "1",
+                                        .extent = Extent::Pair,
+                                        .savedIn = kCheckpoint,
+                                        .checkpointSinceMinor = 3};
 
 // The reference's fields a snapshot adds (io/snapshot.hpp).
 inline constexpr Field kReferencePosition{"X", "m", Extent::Particle, kSnapshot};

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -29,11 +30,16 @@ struct EnergyLedger {
     /// Potential of the penalty springs (contact between bodies, walls) at the current x [J]:
     /// a function of x, stored so that the history and a restart need no contact search.
     double contactEnergy = 0.0;
+    /// Taken out of the motion by the cohesive forces of softening bonds [J] (their work on the
+    /// opening, forces/cohesive_bonds.hpp); at a bond's full separation its whole share is
+    /// dissipated.
+    double cohesiveWork = 0.0;
     // Powers at the current time, for the trapezoidal rule of the next step [W].
     double viscousPower = 0.0;
     double hourglassPower = 0.0;
     double boundaryPower = 0.0;
     double externalPower = 0.0;
+    double cohesivePower = 0.0;
 };
 
 struct State {
@@ -76,6 +82,14 @@ struct State {
     /// holds or before it was first measured; contact/penalty_contact.hpp); empty without
     /// self-contact.
     std::vector<double> contactSeparation;
+    /// Per pair of Reference::pairs (CSR order), in bodies with a fracture energy: the normal
+    /// stress n·σ̄·n across the bond when it broke by stretch [Pa] (> 0: it softens, carrying a
+    /// cohesive force; 0: it holds, or broke without cohesion; forces/cohesive_bonds.hpp); empty
+    /// without such bodies.
+    std::vector<double> cohesiveTraction;
+    /// Per pair, beside cohesiveTraction: the largest stretch |x_ab|/|X_ab| − 1 the softening bond
+    /// has had since it broke.
+    std::vector<double> cohesiveStretch;
     EnergyLedger ledger;
 
     /// Calls visit(field, array) for every array of the state, in a fixed order, with its entry
@@ -128,7 +142,18 @@ struct State {
         visit("ledger/external_work", s.ledger.externalWork);
         visit("ledger/contact_energy", s.ledger.contactEnergy);
         visit("ledger/external_power", s.ledger.externalPower);
+        visit("ledger/cohesive_work", s.ledger.cohesiveWork);
+        visit("ledger/cohesive_power", s.ledger.cohesivePower);
     }
+
+  public:
+    /// The checkpoint format 3.N that added the scalar `name` (0: every 3.x file has it); an
+    /// older file reads it as 0.
+    static int scalarSinceMinor(std::string_view name) {
+        return name.starts_with("ledger/cohesive_") ? 3 : 0;
+    }
+
+  private:
     // The arrays in order, each with its field (particles/fields.hpp).
     static constexpr auto arrays() {
         return std::tuple{std::pair{&fields::kPosition, &State::x},
@@ -145,7 +170,9 @@ struct State {
                           std::pair{&fields::kBondIntact, &State::bondIntact},
                           std::pair{&fields::kWallForce, &State::wallForce},
                           std::pair{&fields::kContactForce, &State::contactForce},
-                          std::pair{&fields::kContactSeparation, &State::contactSeparation}};
+                          std::pair{&fields::kContactSeparation, &State::contactSeparation},
+                          std::pair{&fields::kCohesiveTraction, &State::cohesiveTraction},
+                          std::pair{&fields::kCohesiveStretch, &State::cohesiveStretch}};
     }
 
   public:

@@ -94,6 +94,8 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
         {"file_and_constants.toml", "unknown key 'density' in [[material]] (a [[material]] with",
          8},
         {"negative_bond_stretch.toml", "'bond_stretch' in [[material]] must be ≥ 0", 10},
+        {"fracture_energy_without_bond_stretch.toml",
+         "'fracture_energy' in [[material]] needs 'bond_stretch' > 0", 10},
         {"negative_checkpoint_interval.toml", "'checkpoint_interval' in [run] must be ≥ 0", 4},
         {"checkpoint_interval_not_a_number.toml", "'checkpoint_interval' in [run] must be a number",
          5},

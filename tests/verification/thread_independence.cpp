@@ -23,11 +23,13 @@ namespace {
 using testing::bitIdentical;
 
 State runWithThreads(int threads, EnergyReport* energy, const Material& material, int steps = 150,
-                     double bondStretch = 0.0, FailedBondRule failedBonds = FailedBondRule::Keep) {
+                     double bondStretch = 0.0, FailedBondRule failedBonds = FailedBondRule::Keep,
+                     double fractureEnergy = 0.0) {
     const int saved = omp_get_max_threads();
     omp_set_num_threads(threads);
     SolverOptions options;
     options.bondStretch = {bondStretch};
+    options.fractureEnergy = {fractureEnergy};
     options.failedBonds = {failedBonds};
     options.viscosity = {1.0, 1.0};
     options.hourglass = 0.1;
@@ -114,6 +116,25 @@ TEST(ThreadIndependence, BrokenBondsAndTheirEnergyToo) {
     EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
     EXPECT_GT(std::count(s1.bondIntact.begin(), s1.bondIntact.end(), std::uint8_t{0}), 0);
     EXPECT_NE(e1.fractureEnergy, 0.0);  // signed: bonds break here under axial compression
+}
+
+// With a fracture energy the same broken bonds soften (forces/cohesive_bonds.hpp): the
+// tractions they broke under, their largest stretches, the cohesive forces and their work are
+// the same bits on 1 and 2 threads.
+TEST(ThreadIndependence, SofteningBondsToo) {
+    EnergyReport e1, e2;
+    const State s1 = runWithThreads(1, &e1, kSteel, 60, 1e-3, FailedBondRule::Keep, 2000.0);
+    const State s2 = runWithThreads(2, &e2, kSteel, 60, 1e-3, FailedBondRule::Keep, 2000.0);
+    EXPECT_TRUE(bitIdentical(s1.x, s2.x));
+    EXPECT_TRUE(bitIdentical(s1.v, s2.v));
+    EXPECT_TRUE(bitIdentical(s1.bondIntact, s2.bondIntact));
+    EXPECT_TRUE(bitIdentical(s1.cohesiveTraction, s2.cohesiveTraction));
+    EXPECT_TRUE(bitIdentical(s1.cohesiveStretch, s2.cohesiveStretch));
+    EXPECT_EQ(std::memcmp(&s1.ledger, &s2.ledger, sizeof(EnergyLedger)), 0);
+    EXPECT_GT(std::count_if(s1.cohesiveTraction.begin(), s1.cohesiveTraction.end(),
+                            [](double t) { return t > 0.0; }),
+              0);
+    EXPECT_GT(e1.cohesiveWork, 0.0);
 }
 
 // Johnson–Cook particles that fail lose their bonds under `rule` (SolverOptions::failedBonds): the

@@ -12,10 +12,12 @@ namespace {
 
 TEST(PowerLedger, TrapezoidOverTheStep) {
     EnergyLedger L;
-    startLedger(L, {2.0, -1.0, 3.0, 4.0});
-    bookStep(L, {6.0, 1.0, 5.0, 8.0}, 0.5);
+    startLedger(L, {2.0, -1.0, 3.0, 4.0, -3.0});
+    bookStep(L, {6.0, 1.0, 5.0, 8.0, -7.0}, 0.5);
     EXPECT_EQ(L.viscousWork, -0.25 * (2.0 + 6.0));  // dissipation: −∫ P dt
     EXPECT_EQ(L.hourglassWork, -0.25 * (-1.0 + 1.0));
+    EXPECT_EQ(L.cohesiveWork, 0.25 * (3.0 + 7.0));  // the cohesive forces' take: −∫ P dt
+    EXPECT_EQ(L.cohesivePower, -7.0);
     EXPECT_EQ(L.boundaryWork, 0.25 * (3.0 + 5.0));
     EXPECT_EQ(L.externalWork, 0.25 * (4.0 + 8.0));
     EXPECT_EQ(L.viscousPower, 6.0);  // kept for the next step
@@ -43,6 +45,7 @@ TEST(PowerLedger, PowersFromTheChannelsAndTheReactions) {
     const LedgerPowers p = measurePowers(ref, s, c, 0.25, driven, scratch);
     EXPECT_EQ(p.viscous, -1.0 * 1.0 + -0.5 * 2.0);
     EXPECT_EQ(p.hourglass, 0.0) << "no stage wrote the channel";
+    EXPECT_EQ(p.cohesive, 0.0) << "no stage wrote the channel";
     EXPECT_EQ(p.external, 0.25 + 7.0 * 2.0);
     EXPECT_NEAR(p.boundary, (m * 1.0 - 5.0) * 2.0, 1e-9);
     applyConstraints(driven, ref, s, 3.0);

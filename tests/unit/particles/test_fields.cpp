@@ -72,7 +72,7 @@ TEST(FieldRegistry, EveryFieldHasAUniqueNameAUnitAndConsistentFlags) {
     // Every state array is in checkpoints (a restart needs all of it).
     State().forEachArray(
         [&](const Field& f, const auto&) { EXPECT_TRUE(f.isSavedIn(kCheckpoint)) << f.name; });
-    EXPECT_EQ(names.size(), 21u);  // 15 state arrays + 6 reference fields of snapshots
+    EXPECT_EQ(names.size(), 23u);  // 17 state arrays + 6 reference fields of snapshots
 }
 
 TEST(FieldRegistry, ASnapshotHoldsExactlyTheStateArraysFlaggedForSnapshots) {
