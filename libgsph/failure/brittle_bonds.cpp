@@ -162,13 +162,30 @@ void BrittleBonds::refreshParticle(const State& state, Index a) {
     stepFactor_[ia] = spans && byDamage ? factor : 1.0;
 }
 
+void BrittleBonds::markStale() {
+    stale_.resize(damaged_.size());
+    parallelFor(ref_.size(), [&](Index a) {
+        const auto ia = static_cast<std::size_t>(a);
+        std::uint8_t stale = damaged_[ia];
+        for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a) && stale == 0; ++k)
+            stale = damaged_[static_cast<std::size_t>(
+                ref_.pairs.neighbor[static_cast<std::size_t>(k)])];
+        // The pairs of other spaces' lists that hold a (their transposed terms are a's too).
+        if (!ref_.crossOffset.empty())
+            for (Index k = ref_.crossOffset[ia]; k < ref_.crossOffset[ia + 1] && stale == 0; ++k)
+                stale = damaged_[static_cast<std::size_t>(
+                    ref_.crossOwner[static_cast<std::size_t>(k)])];
+        stale_[ia] = stale;
+    });
+}
+
 void BrittleBonds::attach(const State& state) {
     if (!enabled_) return;
     if (state.bondIntact.size() != static_cast<std::size_t>(ref_.pairs.pairs()))
         throw InputError("state has " + std::to_string(state.bondIntact.size()) +
                          " bond flags for " + std::to_string(ref_.pairs.pairs()) + " pairs");
     parallelFor(ref_.size(), [&](Index a) { refreshParticle(state, a); });
-    anyDamaged_ = std::find(damaged_.begin(), damaged_.end(), 1) != damaged_.end();
+    markStale();
     // Cut: the next call tries every failed particle again (the bonds it cut are broken
     // already, the others stay), so a resumed run cuts exactly what the uninterrupted one does.
     std::fill(failedSeen_.begin(), failedSeen_.end(), std::uint8_t{0});
@@ -295,7 +312,7 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
         refreshParticle(state, a);
         released_[ia] = 0.5 * state.dt * (released_[ia] - internalPower(state, a));
     });
-    anyDamaged_ = true;  // the particles of the fresh pairs are
+    markStale();
     result.releasedEnergy = deterministicSum(
         ref_.size(), 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; },
         partialSums_);
@@ -318,7 +335,7 @@ void BrittleBonds::startSoftening(State& state, std::size_t ia, Index k) const {
 
 BondView BrittleBonds::view(const State& state) const {
     if (!enabled_) return {};
-    return {state.bondIntact.data(), damaged_.data(), anyDamaged_};
+    return {state.bondIntact.data(), damaged_.data(), stale_.data()};
 }
 
 }  // namespace gsph

@@ -182,6 +182,8 @@ class BrittleBonds {
 
   private:
     void refreshParticle(const State& state, Index a);
+    /// Derives stale_ from damaged_ (BondView::stale).
+    void markStale();
     /// Records the softening of the pair at CSR entry k of particle ia (see above).
     void startSoftening(State& state, std::size_t ia, Index k) const;
     /// K : ∇v of particle a over its surviving bonds with its current G (0 when detached).
@@ -194,7 +196,7 @@ class BrittleBonds {
     bool enabled_ = false;
     std::vector<Mat3> G_;
     std::vector<std::uint8_t> damaged_, detached_;
-    bool anyDamaged_ = false;               ///< some entry of damaged_ is 1
+    std::vector<std::uint8_t> stale_;       ///< per particle: BondView::stale
     std::vector<Index> changed_;            ///< per particle: bonds broken by the current call
     std::vector<double> released_;          ///< per particle: its share of the released energy
     std::vector<double> partialSums_;       ///< scratch of deterministicSum

@@ -449,28 +449,22 @@ template <bool Viscous, int Hourglass, class L>
                                                  std::vector<Vec3>& force, ForceParts& parts) {
     CsrSums s{};
     const Index len = block.size();
-    const bool cached = in.staged != nullptr && !bonds.anyDamaged;
-    if (cached) {
-        // Staged once (CsrPairWeights): the masked strips, then each particle's other pairs.
-        const CsrPairWeights& w = *in.staged;
-        for (Index i = 0; i < len; ++i) {
-            const Index t = w.stripAt[static_cast<std::size_t>(block.particle(i))];
-            if (t >= 0)
-                maskedStrip<Viscous, Hourglass, L>(in, w, w.strips[static_cast<std::size_t>(t)], i,
-                                                   s);
-        }
-        for (Index i = 0; i < len; ++i) {
-            const auto ic = static_cast<std::size_t>(block.particle(i));
+    bool afresh[kMaxBlock];
+    stagedStrips(in.staged, bonds, block, afresh, [&](Index i, const MaskedStrip& strip) {
+        maskedStrip<Viscous, Hourglass, L>(in, *in.staged, strip, i, s);
+    });
+    for (Index i = 0; i < len; ++i) {
+        const Index c = block.particle(i);
+        if (afresh[i]) {
+            Index size = 0;
+            const StagedPairs& st = stageIntoScratch(ref, bonds, c, size);
+            gatheredPairs<Viscous, Hourglass, L>(in, st, 0, size, c, i, s);
+        } else {
+            const CsrPairWeights& w = *in.staged;
+            const auto ic = static_cast<std::size_t>(c);
             gatheredPairs<Viscous, Hourglass, L>(in, w.pairs, w.begin[ic],
                                                  static_cast<Index>(w.begin[ic + 1] - w.begin[ic]),
-                                                 block.particle(i), i, s);
-        }
-    } else {
-        // Bonds have broken: each particle's surviving pairs staged here, in one run.
-        for (Index i = 0; i < len; ++i) {
-            Index size = 0;
-            const StagedPairs& st = stageIntoScratch(ref, bonds, block.particle(i), size);
-            gatheredPairs<Viscous, Hourglass, L>(in, st, 0, size, block.particle(i), i, s);
+                                                 c, i, s);
         }
     }
     leaveLanes<L>();

@@ -199,24 +199,21 @@ template <class L>
                                                      const Vec3Field& v, BlockThetaGradients& g) {
     CsrThetaSums s{};
     const Index len = block.size();
-    if (staged != nullptr && !bonds.anyDamaged) {
-        for (Index i = 0; i < len; ++i) {
-            const Index t = staged->stripAt[static_cast<std::size_t>(block.particle(i))];
-            if (t >= 0)
-                maskedThetaSums<L>(*staged, staged->strips[static_cast<std::size_t>(t)], x, v, i,
-                                   s);
-        }
-        for (Index i = 0; i < len; ++i) {
-            const auto ia = static_cast<std::size_t>(block.particle(i));
-            gatheredThetaSums<L>(staged->pairs, staged->begin[ia],
-                                 static_cast<Index>(staged->begin[ia + 1] - staged->begin[ia]), x,
-                                 v, i, s);
-        }
-    } else {
-        for (Index i = 0; i < len; ++i) {
+    bool afresh[kMaxBlock];
+    stagedStrips(staged, bonds, block, afresh, [&](Index i, const MaskedStrip& strip) {
+        maskedThetaSums<L>(*staged, strip, x, v, i, s);
+    });
+    for (Index i = 0; i < len; ++i) {
+        const Index c = block.particle(i);
+        if (afresh[i]) {
             Index size = 0;
-            const StagedPairs& st = stageIntoScratch(ref, bonds, block.particle(i), size);
+            const StagedPairs& st = stageIntoScratch(ref, bonds, c, size);
             gatheredThetaSums<L>(st, 0, size, x, v, i, s);
+        } else {
+            const auto ic = static_cast<std::size_t>(c);
+            gatheredThetaSums<L>(staged->pairs, staged->begin[ic],
+                                 static_cast<Index>(staged->begin[ic + 1] - staged->begin[ic]), x,
+                                 v, i, s);
         }
     }
     leaveLanes<L>();

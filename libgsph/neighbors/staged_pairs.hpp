@@ -82,9 +82,9 @@ struct MaskedStrip {
 /// Every CSR particle's pairs staged once in the reference configuration, all bonds intact: the
 /// same-space pairs of the particles in masked strips (stripAt[a] ≥ 0 for a strip's first
 /// particle) as strips; the rest of particle a's pairs (all of them outside strips) as its run
-/// [begin[a], begin[a + 1]) of `pairs`, gathered. The force and θ-gradient loops read it while
-/// no particle is damaged and stage each CSR particle's pairs themselves otherwise
-/// (stageIntoScratch: the same pairs in one run; the same result to round-off).
+/// [begin[a], begin[a + 1]) of `pairs`, gathered. The force and θ-gradient loops read it for every
+/// particle whose staged weights hold and stage the pairs of the others themselves
+/// (stagedStrips, stageIntoScratch: the same pairs in one run; the same result to round-off).
 struct CsrPairWeights {
     std::vector<std::size_t> begin;
     StagedPairs pairs;
@@ -95,6 +95,30 @@ struct CsrPairWeights {
     std::size_t bytes() const;
 };
 CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks);
+
+/// Which of a CSR block's particles read `staged` and which stage their pairs afresh: afresh[i]
+/// for column i when there is nothing staged, the block was not staged (a stencil block on the
+/// CSR path for a broken bond), the particle's staged weights are stale (BondView::stale), or
+/// it belongs to a masked strip with such a particle (a strip is read whole or not at all).
+/// Calls strip(i, s) for every masked strip s read, i the column of its first particle.
+template <class StripFn>
+inline void stagedStrips(const CsrPairWeights* staged, const BondView& bonds,
+                         const ParticleBlock& block, bool* afresh, StripFn&& strip) {
+    const Index len = block.size();
+    const bool none = staged == nullptr || block.stencil != kNoStencil;
+    for (Index i = 0; i < len; ++i) afresh[i] = none || !bonds.keepsStaged(block.particle(i));
+    if (none) return;
+    for (Index i = 0; i < len; ++i) {
+        const Index t = staged->stripAt[static_cast<std::size_t>(block.particle(i))];
+        if (t < 0) continue;
+        bool whole = true;
+        for (Index u = i; u < i + kPairLanes; ++u) whole = whole && !afresh[u];
+        if (whole)
+            strip(i, staged->strips[static_cast<std::size_t>(t)]);
+        else
+            for (Index u = i; u < i + kPairLanes; ++u) afresh[u] = true;
+    }
+}
 
 /// Stages all of particle c's pairs that `bonds` keeps, in one run from entry 0, into this
 /// thread's buffer (grown as needed, never shrunk: no allocation once it has grown); returns

@@ -12,6 +12,7 @@
 #include <random>
 
 #include "core/lanes.hpp"
+#include "failure/brittle_bonds.hpp"
 #include "forces/internal_force.hpp"
 #include "kinematics/deformation_gradient.hpp"
 #include "support/overset_fixtures.hpp"
@@ -59,12 +60,13 @@ struct Fixture {
         options.hourglassModulus = modulus;
     }
 
-    std::vector<Vec3> force(const CsrPairWeights* staged, ForceParts& parts) const {
+    std::vector<Vec3> force(const CsrPairWeights* staged, ForceParts& parts,
+                            const BondView& bonds = {}, const Mat3* G = nullptr) const {
         const auto n = static_cast<std::size_t>(t.ref.size());
         std::vector<Vec3> f(n);
         parts.viscous.assign(n, Vec3::Zero());
         parts.hourglass.assign(n, Vec3::Zero());
-        internalForce(t.ref, fields, factors, blocks, options, f, parts, {}, nullptr, staged);
+        internalForce(t.ref, fields, factors, blocks, options, f, parts, bonds, G, staged);
         return f;
     }
 
@@ -176,6 +178,64 @@ TEST_P(CsrPairLanes, StagedOnceOrEachCallEqualThePairFormulasWithTheSameBitsAtEv
     }
     std::printf("[csr lanes] %d particles, %zu cross pairs: bit-identical at %d strip widths\n",
                 fx.t.ref.size(), fx.t.ref.crossPair.size(), widths);
+}
+
+// Bonds broken in one corner of the fine block: only the particles whose own or whose
+// neighbours' bonds broke (BondView::stale), and the masked strips holding one, stage their pairs
+// afresh; the others read the weights staged once. The force is the one of staging every
+// particle afresh to round-off, with the same bits at every width.
+TEST(CsrPairLanes, OnlyParticlesNearABrokenBondStageTheirPairsAfresh) {
+    const Fixture fx(HourglassModulus::Elastic);
+    const Reference& ref = fx.t.ref;
+    const CsrPairWeights staged = stageCsrPairs(ref, fx.blocks);
+    State state = State::atRest(ref.X, static_cast<std::size_t>(ref.pairs.pairs()));
+    const Vec3 corner = ref.X[0];
+    const double cut = 1.5 * fx.t.fine;
+    for (Index a = 0; a < ref.size(); ++a)
+        for (Index k = ref.pairs.begin(a); k < ref.pairs.end(a); ++k) {
+            const auto b =
+                static_cast<std::size_t>(ref.pairs.neighbor[static_cast<std::size_t>(k)]);
+            const bool nearA = (ref.X[static_cast<std::size_t>(a)] - corner).norm() < cut;
+            if (nearA != ((ref.X[b] - corner).norm() < cut))
+                state.bondIntact[static_cast<std::size_t>(k)] = 0;
+        }
+    BrittleBonds bonds(ref, std::vector<double>(static_cast<std::size_t>(ref.size()), 0.0), {},
+                       true);
+    bonds.attach(state);
+    const BondView view = bonds.view(state);
+    Index stale = 0;
+    for (Index a = 0; a < ref.size(); ++a) stale += view.keepsStaged(a) ? 0 : 1;
+    ASSERT_GT(stale, 0);
+    ASSERT_LT(stale, ref.size() / 2) << "most particles must still read the staged weights";
+    limitLanes(2);
+    ForceParts parts;
+    const std::vector<Vec3> afresh = fx.force(nullptr, parts, view, bonds.G().data());
+    const std::vector<Vec3> portable = fx.force(&staged, parts, view, bonds.G().data());
+    for (int width : {4, 8}) {
+        limitLanes(width);
+        if (laneWidth() < width) continue;
+        EXPECT_TRUE(sameBits(fx.force(&staged, parts, view, bonds.G().data()), portable))
+            << width << " lanes";
+    }
+    limitLanes(8);
+    const double worst = worstAgainst(afresh, portable);
+    // F's θ-gradients over the surviving bonds likewise.
+    double worstGradient = 0.0;
+    for (const ParticleBlock& block : fx.blocks.blocks) {
+        BlockThetaGradients once, each;
+        csrThetaGradients(ref, &staged, view, block, fx.fields.x, fx.fields.v, once);
+        csrThetaGradients(ref, nullptr, view, block, fx.fields.x, fx.fields.v, each);
+        for (Index i = 0; i < block.size(); ++i)
+            worstGradient = std::max(
+                {worstGradient, (once.gradX(i) - each.gradX(i)).norm() / each.gradX(i).norm(),
+                 (once.gradV(i) - each.gradV(i)).norm() / each.gradV(i).norm()});
+    }
+    std::printf(
+        "[csr lanes] %d of %d particles stale: against staging every particle afresh %.1e "
+        "of max |f|, θ-gradients %.1e\n",
+        stale, ref.size(), worst, worstGradient);
+    EXPECT_LT(worst, 1e-15);
+    EXPECT_LT(worstGradient, 3e-14);
 }
 
 TEST(CsrPairLanes, ThetaGradientsAreTheListSumsWithTheSameBitsAtEveryWidth) {
