@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "forces/cohesive_bonds.hpp"
 #include "integrator/energy.hpp"
@@ -30,43 +31,53 @@ double sumAcross(const Reference& ref, double x0, Keep keep, Term term) {
     return sum;
 }
 
-// A plane crack through a cubic lattice normal to an axis: the bonds it cuts hold the fracture
-// energy. The calibration averages over the plane's orientations; on the lattice an axis plane
-// gets exactly (Δx = 1, sums over the support's offsets ξ)
-//   4 Σ_{ξx>0} ξ_x |ξ| / Σ_all |ξ|²  (κ = 0.9, 26 neighbours: 4 (1 + 4√2 + 4√3) / 54 = 1.0063;
-//   κ = 1.2: 4 (1 + 4√2 + 4√3 + 4√5 + 2 (2 + 4√5)) / 198 = 0.8973, its support holding the
-//   offsets (2, 1, 0) but not (2, 1, 1)).
-// Counted over the bonds whose lower end lies in the 2 × 2 columns at the middle of a 12³ block,
-// far enough from its faces (5 cells) that both ends of every such bond have whole
-// neighbourhoods.
-TEST(CohesiveBonds, AnAxisPlaneCrackOfACubicLatticeTakesItsShareOfTheFractureEnergy) {
+// A plane crack through a cubic (square, in plane strain) lattice normal to an axis: the bonds
+// it cuts hold the fracture energy. The calibration averages over the plane's orientations; on
+// the lattice an axis plane gets exactly (Δx = 1, sums over the support's offsets ξ)
+//   3-D: 4 Σ_{ξx>0} ξ_x |ξ| / Σ_all |ξ|²   (κ = 0.9, 26 neighbours: 4 (1 + 4√2 + 4√3) / 54 =
+//        1.0063; κ = 1.2: 4 (1 + 4√2 + 4√3 + 4√5 + 2 (2 + 4√5)) / 198 = 0.8973, its support
+//        holding the offsets (2, 1, 0) but not (2, 1, 1));
+//   2-D: π Σ_{ξx>0} ξ_x |ξ| / Σ_all |ξ|²   (κ = 0.9: π (1 + 2√2) / 12 = 1.0022; κ = 1.2:
+//        π (1 + 2√2 + 2√5 + 4 + 4√5) / 68 = 0.9815).
+// Counted over the bonds whose lower end lies in the central columns of a 12-cell block, far
+// enough from its faces (5 cells) that both ends of every such bond have whole neighbourhoods.
+TEST(CohesiveBonds, AnAxisPlaneCrackOfALatticeTakesItsShareOfTheFractureEnergy) {
     const double g0 = 1000.0, dx = 1e-3;  // [J/m²], [m]
     const int cells = 12;
-    for (const double kappa : {0.9, 1.2}) {
-        const Reference ref =
-            testing::builtReference(gradedBoxMap(Vec3(cells * dx, cells * dx, cells * dx), {}), 3,
-                                    {cells, cells, cells}, kappa, 7800.0);
-        const auto n = static_cast<std::size_t>(ref.size());
-        CohesiveBondStage stage(ref, std::vector<double>(n, 1e-3), std::vector<double>(n, g0));
-        const auto central = [&](Index a) {
-            const Vec3& X = ref.X[static_cast<std::size_t>(a)];
+    const double r2 = std::sqrt(2.0), r3 = std::sqrt(3.0), r5 = std::sqrt(5.0);
+    for (const int dim : {3, 2})
+        for (const double kappa : {0.9, 1.2}) {
+            const bool planar = dim == 2;
+            const Reference ref = testing::builtReference(
+                gradedBoxMap(Vec3(cells * dx, cells * dx, planar ? 0.0 : cells * dx), {}), dim,
+                {cells, cells, planar ? 1 : cells}, kappa, 7800.0);
+            const auto n = static_cast<std::size_t>(ref.size());
+            CohesiveBondStage stage(ref, std::vector<double>(n, 1e-3), std::vector<double>(n, g0));
             const auto column = [&](double x) { return static_cast<int>(std::floor(x / dx)); };
-            return column(X[1]) >= 5 && column(X[1]) <= 6 && column(X[2]) >= 5 && column(X[2]) <= 6;
-        };
-        const double energy = sumAcross(
-            ref, 6.0 * dx, central, [&](Index a, Index k) { return stage.separationEnergy(a, k); });
-        const double s5 = std::sqrt(5.0);
-        const double expected =
-            kappa < 1.0 ? 4.0 * (1.0 + 4.0 * std::sqrt(2.0) + 4.0 * std::sqrt(3.0)) / 54.0
-                        : 4.0 *
-                              (1.0 + 4.0 * std::sqrt(2.0) + 4.0 * std::sqrt(3.0) + 4.0 * s5 +
-                               2.0 * (2.0 + 4.0 * s5)) /
-                              198.0;
-        const double perArea = energy / (g0 * 4.0 * dx * dx);
-        std::printf("[cohesive] κ = %.1f: an axis plane crack holds %.6f G0 (lattice: %.6f)\n",
-                    kappa, perArea, expected);
-        EXPECT_NEAR(perArea, expected, 1e-12);
-    }
+            const auto central = [&](Index a) {
+                const Vec3& X = ref.X[static_cast<std::size_t>(a)];
+                return column(X[1]) >= 5 && column(X[1]) <= 6 &&
+                       (planar || (column(X[2]) >= 5 && column(X[2]) <= 6));
+            };
+            const double energy = sumAcross(ref, 6.0 * dx, central, [&](Index a, Index k) {
+                return stage.separationEnergy(a, k);
+            });
+            const double expected =
+                planar
+                    ? (kappa < 1.0
+                           ? std::numbers::pi * (1.0 + 2.0 * r2) / 12.0
+                           : std::numbers::pi * (1.0 + 2.0 * r2 + 2.0 * r5 + 4.0 + 4.0 * r5) / 68.0)
+                    : (kappa < 1.0
+                           ? 4.0 * (1.0 + 4.0 * r2 + 4.0 * r3) / 54.0
+                           : 4.0 * (1.0 + 4.0 * r2 + 4.0 * r3 + 4.0 * r5 + 2.0 * (2.0 + 4.0 * r5)) /
+                                 198.0);
+            const double area = planar ? 2.0 * dx : 4.0 * dx * dx;  // per m of thickness in 2-D
+            const double perArea = energy / (g0 * area);
+            std::printf(
+                "[cohesive] %d-D, κ = %.1f: an axis plane crack holds %.6f G0 (lattice: %.6f)\n",
+                dim, kappa, perArea, expected);
+            EXPECT_NEAR(perArea, expected, 1e-12);
+        }
 }
 
 // The halves of a bar (ν = 0, 40 × 4 × 4 cells of 1 mm) whose mid-plane bonds broke at the onset
