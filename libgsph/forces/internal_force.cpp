@@ -274,7 +274,7 @@ struct RunWeights {
         return at.scalar(st.hgWeight);
     }
     [[gnu::always_inline]] L share() const { return at.scalar(st.share); }
-    [[gnu::always_inline]] L valid() const { return at.scalar(st.valid); }
+    [[gnu::always_inline]] L valid() const { return share(); }  // 0 only for padding
 };
 
 // The weights of a masked strip's entries (StripPairs): the reference offset, h̄ and the

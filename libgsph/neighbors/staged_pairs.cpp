@@ -13,7 +13,7 @@ namespace {
 struct PairRecord {
     Index b = 0;
     Vec3 own = Vec3::Zero(), wT = Vec3::Zero(), gQ = Vec3::Zero(), gN = Vec3::Zero();
-    double W = 0.0, share = 0.0, valid = 0.0;
+    double W = 0.0, share = 0.0;
 };
 
 // Pair k of c's own list (it holds).
@@ -29,7 +29,6 @@ PairRecord ownRecord(const Reference& ref, const BondView& bonds, Index c, Index
     r.own = own != nullptr ? Vec3(e.gradW + own[slot]) : e.gradW;
     r.gQ = e.gradW;
     r.W = e.W;
-    r.valid = 1.0;
     if (ref.space[static_cast<std::size_t>(r.b)] != ref.space[ic]) {
         r.share = 0.5;
     } else {
@@ -54,7 +53,6 @@ PairRecord crossRecord(const Reference& ref, const BondView& bonds, Index k, Ind
     r.gN = -e.gradW;
     r.W = e.W;
     r.share = 0.5;
-    r.valid = 1.0;
     return r;
 }
 
@@ -63,7 +61,7 @@ void put(const Reference& ref, Index c, const PairRecord& r, StagedPairs& st, st
     const auto ic = static_cast<std::size_t>(c), ib = static_cast<std::size_t>(r.b);
     const std::size_t m = st.stride;
     const Vec3 Y = ref.X[ib] - ref.X[ic];
-    st.b[i] = r.b, st.share[i] = r.share, st.valid[i] = r.valid;
+    st.b[i] = r.b, st.share[i] = r.share;
     st.Y2[i] = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
     st.hBar[i] = 0.5 * (ref.smoothingLength[ic] + ref.smoothingLength[ib]);
     st.hgWeight[i] = 0.5 * (ref.quadVolume[ic] + ref.quadVolume[ib]) * r.W;
@@ -130,7 +128,7 @@ const StagedPairs& stageIntoScratch(const Reference& ref, const BondView& bonds,
 std::size_t CsrPairWeights::bytes() const {
     return begin.size() * sizeof(std::size_t) + stripAt.size() * sizeof(Index) +
            strips.size() * sizeof(MaskedStrip) + delta.size() * sizeof(Index) +
-           pairs.stride * (sizeof(Index) + 20 * sizeof(double)) +
+           pairs.stride * (sizeof(Index) + 19 * sizeof(double)) +
            stripPairs.stride * 11 * sizeof(double);
 }
 

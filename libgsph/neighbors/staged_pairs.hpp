@@ -18,7 +18,7 @@
 //   Y, Y2 X_b − X_c and |X_b − X_c|² ((Y0² + Y1²) + Y2²); hBar ½(h_c + h_b) (the viscosity's);
 //   hgWeight  ½(V_c + V_b) ω W (the hourglass pair's weight, forces/hourglass.hpp);
 //   share the hourglass force's share (1 within a space, ½ across, the other half on the
-//         other side), 0 for padding; valid: 1, 0 for padding (b = c).
+//         other side), 0 for padding (b = c): the loops read share ≠ 0 as "the pair exists".
 // Y, Y2, hBar and hgWeight are reference data the force would otherwise gather per pair at
 // every step; they are computed here with the same operations, so the bits do not change.
 // Signs and zeros are exact, so a term that is absent adds exactly nothing (a sum that starts
@@ -39,15 +39,14 @@ namespace gsph {
 /// The pairs of the CSR path staged as SoA weights (what the vectorised CSR loops read;
 /// entry i of a vector weight's component r at [r * stride + i]): per pair that holds, the
 /// neighbour b and the weights of each term, signed and zero where the term is absent; each
-/// particle's run padded to a multiple of 8 with entries whose `valid` is 0.
+/// particle's run padded to a multiple of 8 with entries whose `share` is 0.
 struct StagedPairs {
     std::vector<Index> b;
-    std::vector<double> wOwn, wT, gQ, gN, Y, Y2, hBar, hgWeight, share, valid;
+    std::vector<double> wOwn, wT, gQ, gN, Y, Y2, hBar, hgWeight, share;
     std::size_t stride = 0;
     void resize(std::size_t n) {
         stride = n;
         b.resize(n), Y2.resize(n), hBar.resize(n), hgWeight.resize(n), share.resize(n);
-        valid.resize(n);
         wOwn.resize(3 * n), wT.resize(3 * n), gQ.resize(3 * n), gN.resize(3 * n), Y.resize(3 * n);
     }
 };
