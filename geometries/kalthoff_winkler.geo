@@ -20,10 +20,12 @@
 //   y: [-H/2, -d/2] and [d/2, H/2] (where the cracks run) and [-d/2, -y1], [y1, d/2]
 //      (a band a below the notch lines) cells of about h (the notch lines y = ±d/2 lie on mesh
 //      lines, so no particle sits on a notch plane); [-y1, 0] and [0, y1] graded from h at
-//      ±y1 to `coarsen` h at the middle line y = 0, where no crack runs;
+//      ±y1 to `coarsenY` h (2) at the middle line y = 0, where no crack runs (graded to 3 h,
+//      the far edge's reflected tension breaks bonds along two bands where the fine cells meet
+//      the coarse ones, within the tips' crack paths' reach: docs/theory.md "Softening bonds");
 //   z: nz cells through the thickness (default: T/h rounded, as the uniform layout has).
-// `coarsenX`, `coarsenY` (0: `coarsen`) grade one direction only (docs/theory.md: the crack
-// path's sensitivity to the grading).
+// `coarsenX`, `coarsenY` (0: `coarsen`) set one direction's grading on its own (docs/theory.md:
+// the crack path's sensitivity to the grading).
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m).
 // Body: Physical Volume "plate". Set: "impact" (x = 0, |y| ≤ d/2).
@@ -39,7 +41,7 @@ DefineConstant[
                                             // rounded to whole cells of h
   coarsen = {3, Name "Parameters/coarsen"}, // cell size at x = 0 and at y = 0, in h
   coarsenX = {0, Name "Parameters/coarsenX"}, // cell size at x = 0 only (0: coarsen)
-  coarsenY = {0, Name "Parameters/coarsenY"}, // cell size at y = 0 only (0: coarsen)
+  coarsenY = {2, Name "Parameters/coarsenY"}, // cell size at y = 0 only (0: coarsen)
   nz = {0, Name "Parameters/nz"},           // cells through the thickness (0: Round(T/h))
   refine = {1, Name "Parameters/refine"}    // divides h (convergence studies)
 ];
