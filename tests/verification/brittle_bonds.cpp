@@ -30,6 +30,7 @@
 #include "support/ductile_bar.hpp"
 #include "support/johnson_cook_materials.hpp"
 #include "support/lattice_fixtures.hpp"
+#include "support/pulled_bar.hpp"
 
 namespace gsph {
 namespace {
@@ -176,23 +177,12 @@ struct PulledBar {
 };
 
 PulledBar pullBarApart(double epsMax) {
-    const ElasticConstants steel(7800.0, 200e9, 0.3);
-    const double v0 = 5.0, length = 0.04;
-    const int cells = 40;
+    const double v0 = 5.0, length = testing::kPulledBarLength;
     SolverOptions options;
     options.bondStretch = {epsMax};
-    Simulation sim(latticeReference(gradedBoxMap(Vec3(length, 0.004, 0.004), {}), 3, {cells, 4, 4},
-                                    steel.density, 1.2),
-                   {HypoElastic(steel)}, options);
+    const auto bar = testing::pulledBar(options, v0);
+    Simulation& sim = *bar;
     const Reference& ref = sim.reference();
-    std::vector<Index> left, right;
-    for (Index a = 0; a < ref.size(); ++a) {
-        const double X = ref.X[static_cast<std::size_t>(a)][0];
-        if (X < length / cells) left.push_back(a);
-        if (X > length - length / cells) right.push_back(a);
-    }
-    sim.constrain({"left", left, [&](double, const Vec3&) { return Vec3(-v0, 0.0, 0.0); }});
-    sim.constrain({"right", right, [&](double, const Vec3&) { return Vec3(v0, 0.0, 0.0); }});
     PulledBar out;
     // Time for the ends to stretch the bar by about 1 % (the bonds break well before that).
     const double endTime = 0.01 * length / (2.0 * v0);

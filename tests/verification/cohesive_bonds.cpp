@@ -12,6 +12,7 @@
 #include "integrator/energy.hpp"
 #include "simulation.hpp"
 #include "support/lattice_fixtures.hpp"
+#include "support/pulled_bar.hpp"
 
 namespace gsph {
 namespace {
@@ -174,30 +175,20 @@ TEST(CohesiveBonds, TheHalvesOfABarSeparateOnceTheCutBondsHaveTakenTheirEnergy) 
     EXPECT_EQ(largestCohesive, 0.0);
 }
 
-// A bar (40 × 4 × 4 cells of 1 mm, ν = 0.3) whose end layers are driven apart at ±v0: its bonds
+// The pulled bar (support/pulled_bar.hpp, ±5 m/s) with a fracture energy: its bonds
 // break where the stretch reaches εmax (the driven layers first, then all along: measured 2920
 // pairs, 80 % of them under a tensile normal stress, so softening) and soften there
 // (State::cohesiveTraction records the normal stress each broke under, the same on both sides of
 // a pair), the ends do work, and the ledger's total (kinetic + elastic + fracture + cohesive −
 // boundary work) holds: measured 3.0e-3 of the work.
 TEST(CohesiveBonds, ABarPulledApartSoftensTheBondsItBreaksWithTheLedgerClosed) {
-    const ElasticConstants steel(7800.0, 200e9, 0.3);
-    const double v0 = 5.0, length = 0.04, g0 = 2000.0;
+    const double g0 = 2000.0;
     SolverOptions options;
     options.bondStretch = {2e-3};
     options.fractureEnergy = {g0};
-    Simulation sim(latticeReference(gradedBoxMap(Vec3(length, 0.004, 0.004), {}), 3, {40, 4, 4},
-                                    steel.density, 1.2),
-                   {HypoElastic(steel)}, options);
+    const auto bar = testing::pulledBar(options, 5.0);
+    Simulation& sim = *bar;
     const Reference& ref = sim.reference();
-    std::vector<Index> left, right;
-    for (Index a = 0; a < ref.size(); ++a) {
-        const double X = ref.X[static_cast<std::size_t>(a)][0];
-        if (X < length / 40) left.push_back(a);
-        if (X > length - length / 40) right.push_back(a);
-    }
-    sim.constrain({"left", left, [&](double, const Vec3&) { return Vec3(-v0, 0.0, 0.0); }});
-    sim.constrain({"right", right, [&](double, const Vec3&) { return Vec3(v0, 0.0, 0.0); }});
     sim.start();
     const double total0 = sim.energy().total();
     double worstImbalance = 0.0;
