@@ -11,9 +11,13 @@
 
 namespace gsph {
 
-CohesiveBondStage::CohesiveBondStage(const Reference& ref, std::vector<double> onsetStretch,
+CohesiveBondStage::CohesiveBondStage(const Reference& ref, const BrittleBonds& bonds,
+                                     std::vector<double> onsetStretch,
                                      std::vector<double> fractureEnergy)
-    : ref_(ref), onset_(std::move(onsetStretch)), fractureEnergy_(std::move(fractureEnergy)) {
+    : ref_(ref),
+      bonds_(bonds),
+      onset_(std::move(onsetStretch)),
+      fractureEnergy_(std::move(fractureEnergy)) {
     const auto n = static_cast<std::size_t>(ref.size());
     if (onset_.size() != n || fractureEnergy_.size() != n)
         throw InputError("softening bonds: " + std::to_string(fractureEnergy_.size()) +
@@ -75,11 +79,12 @@ StageReport CohesiveBondStage::addForces(const State& state, ForceChannels& out)
     const auto pairs = static_cast<std::size_t>(ref_.pairs.pairs());
     if (state.cohesiveTraction.size() != pairs || state.cohesiveStretch.size() != pairs)
         throw Error("softening bonds: the state holds no cohesive arrays of the pairs' size");
+    const BondView view = bonds_.view(state);
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         Vec3 force = Vec3::Zero();
         double frequency2 = 0.0;
-        if (fractureEnergy_[ia] > 0.0)
+        if (fractureEnergy_[ia] > 0.0 && !view.keepsAll(a))
             for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a); ++k) {
                 const auto ik = static_cast<std::size_t>(k);
                 const double t = state.cohesiveTraction[ik];
@@ -109,9 +114,10 @@ StageReport CohesiveBondStage::addForces(const State& state, ForceChannels& out)
 }
 
 void CohesiveBondStage::record(State& state) const {
+    const BondView view = bonds_.view(state);
     parallelFor(ref_.size(), [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
-        if (fractureEnergy_[ia] == 0.0) return;
+        if (fractureEnergy_[ia] == 0.0 || view.keepsAll(a)) return;
         for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a); ++k) {
             const auto ik = static_cast<std::size_t>(k);
             if (state.cohesiveTraction[ik] > 0.0) state.cohesiveStretch[ik] = largestStretch_[ik];

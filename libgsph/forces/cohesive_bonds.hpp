@@ -35,6 +35,7 @@
 
 #include <vector>
 
+#include "failure/brittle_bonds.hpp"
 #include "forces/force_stage.hpp"
 #include "particles/reference.hpp"
 
@@ -45,8 +46,9 @@ class CohesiveBondStage final : public ForceStage {
     /// Per particle: the onset stretch s0 (its body's εmax) and the fracture energy G0 [J/m²]
     /// (0: its bonds do not soften). Throws InputError on an axisymmetric reference, on G0 < 0
     /// or not finite, on G0 > 0 with s0 ≤ 0, or on a size mismatch.
-    CohesiveBondStage(const Reference& ref, std::vector<double> onsetStretch,
-                      std::vector<double> fractureEnergy);
+    /// `bonds`: the run's bonds (only a particle that lost a bond can have a softening one).
+    CohesiveBondStage(const Reference& ref, const BrittleBonds& bonds,
+                      std::vector<double> onsetStretch, std::vector<double> fractureEnergy);
 
     std::string name() const override { return "cohesive bonds"; }
     StageNeeds needs() const override {
@@ -69,6 +71,7 @@ class CohesiveBondStage final : public ForceStage {
 
   private:
     const Reference& ref_;
+    const BrittleBonds& bonds_;
     std::vector<double> onset_, fractureEnergy_;
     std::vector<double> traction_, energy_;  ///< β_a and ψ_a per particle (see above)
     std::vector<double> largestStretch_;     ///< per pair: m after the last evaluation

@@ -82,9 +82,9 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
         stress_.staged(), options_.viscosity, options_.hourglass, options_.hourglassModulus,
         bonds_));
     if (softeningBonds())
-        stages_.push_back(
-            std::make_shared<CohesiveBondStage>(ref, byParticle(ref, options_.bondStretch, 0.0),
-                                                byParticle(ref, options_.fractureEnergy, 0.0)));
+        stages_.push_back(std::make_shared<CohesiveBondStage>(
+            ref, bonds_, byParticle(ref, options_.bondStretch, 0.0),
+            byParticle(ref, options_.fractureEnergy, 0.0)));
     if (ref.dim.axisymmetric) stages_.push_back(std::make_shared<HoopStressStage>(ref));
     for (auto& stage :
          makeContactStages(ref, pWaveSpeed2, bodies_.size(), options_.contact, std::move(walls)))

@@ -53,7 +53,9 @@ TEST(CohesiveBonds, AnAxisPlaneCrackOfALatticeTakesItsShareOfTheFractureEnergy) 
                 gradedBoxMap(Vec3(cells * dx, cells * dx, planar ? 0.0 : cells * dx), {}), dim,
                 {cells, cells, planar ? 1 : cells}, kappa, 7800.0);
             const auto n = static_cast<std::size_t>(ref.size());
-            CohesiveBondStage stage(ref, std::vector<double>(n, 1e-3), std::vector<double>(n, g0));
+            const BrittleBonds bonds(ref, std::vector<double>(n, 1e-3));
+            CohesiveBondStage stage(ref, bonds, std::vector<double>(n, 1e-3),
+                                    std::vector<double>(n, g0));
             const auto column = [&](double x) { return static_cast<int>(std::floor(x / dx)); };
             const auto central = [&](Index a) {
                 const Vec3& X = ref.X[static_cast<std::size_t>(a)];
