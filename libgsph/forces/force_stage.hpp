@@ -39,8 +39,7 @@ struct ForceChannels {
 
 /// The channels a stage writes beyond `force`.
 struct StageNeeds {
-    bool viscous = false, hourglass = false, cohesive = false, external = false,
-         frequency2 = false;
+    bool viscous = false, hourglass = false, cohesive = false, external = false, frequency2 = false;
 };
 
 /// What a stage reports of one force evaluation besides its forces.
