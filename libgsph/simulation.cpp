@@ -107,8 +107,7 @@ void Simulation::resume(State state, const std::string& source) {
         if (state.contactSeparation.empty())
             state.contactSeparation.assign(expected.bondIntact.size(), 0.0);
     }
-    if (std::any_of(options_.fractureEnergy.begin(), options_.fractureEnergy.end(),
-                    [](double g) { return g != 0.0; })) {
+    if (softensBonds(options_)) {
         expected.cohesiveTraction.assign(expected.bondIntact.size(), 0.0);
         expected.cohesiveStretch.assign(expected.bondIntact.size(), 0.0);
         // A state saved without softening bonds has none softening.

@@ -218,10 +218,9 @@ class RunOutputs {
           ref_(sim.reference()),
           inputs_(std::move(inputs)),
           provenance_(provenanceOf("gsph-solve", kVersion, c.caseFile)),
-          history_(
-              options.runDir / "history.csv", bodyNamesOf(file, sim), wallsOf(c),
-              contactBetweenBodies(sim.options().contact, sim.bodies().size()),
-              std::ranges::any_of(sim.options().fractureEnergy, [](double g) { return g > 0.0; })),
+          history_(options.runDir / "history.csv", bodyNamesOf(file, sim), wallsOf(c),
+                   contactBetweenBodies(sim.options().contact, sim.bodies().size()),
+                   softensBonds(sim.options())),
           probes_(options.runDir / "probes.csv", findProbes(c, ref_, file)),
           progress_(options.progress, c.endTime, ref_.size()) {
         log_.beforePrint = [this] { progress_.clear(); };

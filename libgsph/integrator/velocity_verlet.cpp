@@ -36,15 +36,18 @@ void checkOptions(const SolverOptions& o) {
     if (o.hourglass < 0.0) throw InputError("hourglass coefficient must be ≥ 0");
     if (o.viscosity.linear < 0.0 || o.viscosity.quadratic < 0.0)
         throw InputError("artificial viscosity coefficients must be ≥ 0");
+    for (double g : o.fractureEnergy)
+        if (!(g >= 0.0) || !std::isfinite(g))
+            throw InputError("fracture energy G0 must be finite and ≥ 0, got " + std::to_string(g));
     if (!(o.viscosity.switchMach >= 0.0))
         throw InputError("the viscosity switch's Mach number M0 must be ≥ 0 (0 = off)");
 }
 
 // 1 per particle of a body with a fracture energy; empty when no body has one.
-std::vector<std::uint8_t> softeningFlags(const Reference& ref, const std::vector<double>& g0) {
-    if (std::none_of(g0.begin(), g0.end(), [](double g) { return g != 0.0; })) return {};
+std::vector<std::uint8_t> softeningFlags(const Reference& ref, const SolverOptions& o) {
+    if (!softensBonds(o)) return {};
     std::vector<std::uint8_t> flags;
-    for (double g : byParticle(ref, g0, 0.0)) flags.push_back(g != 0.0 ? 1 : 0);
+    for (double g : byParticle(ref, o.fractureEnergy, 0.0)) flags.push_back(g > 0.0 ? 1 : 0);
     return flags;
 }
 
@@ -64,7 +67,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
       options_(options),
       bonds_(ref, byParticle(ref, options_.bondStretch, 0.0),
              byParticle(ref, options_.failedBonds, FailedBondRule::Keep),
-             !options_.precracks.empty(), softeningFlags(ref, options_.fractureEnergy)),
+             !options_.precracks.empty(), softeningFlags(ref, options_)),
       stress_(ref, bodies_, bonds_, options_.viscosity, options_.hourglassModulus) {
     checkOptions(options_);
     checkConstraints(constraints_, ref);
@@ -81,7 +84,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
         ref, std::move(youngsModulus), stress_.fields(), stress_.factors(), stress_.blocks(),
         stress_.staged(), options_.viscosity, options_.hourglass, options_.hourglassModulus,
         bonds_));
-    if (softeningBonds())
+    if (softensBonds(options_))
         stages_.push_back(std::make_shared<CohesiveBondStage>(
             ref, bonds_, byParticle(ref, options_.bondStretch, 0.0),
             byParticle(ref, options_.fractureEnergy, 0.0)));
@@ -130,12 +133,8 @@ void VelocityVerlet::computeAccelerations(State& state) {
     });
 }
 
-bool VelocityVerlet::softeningBonds() const {
-    return !softeningFlags(ref_, options_.fractureEnergy).empty();
-}
-
 void VelocityVerlet::initialize(State& state) {
-    if (softeningBonds() && state.cohesiveTraction.empty()) {
+    if (softensBonds(options_) && state.cohesiveTraction.empty()) {
         state.cohesiveTraction.assign(state.bondIntact.size(), 0.0);
         state.cohesiveStretch.assign(state.bondIntact.size(), 0.0);
     }

@@ -70,6 +70,14 @@ struct SolverOptions {
     ContactOptions contact;  ///< penalty contact between bodies and with walls
 };
 
+/// True when some body's bonds soften (SolverOptions::fractureEnergy > 0): the run composes the
+/// cohesive stage, and its state holds the cohesive arrays and its history the cohesive work.
+inline bool softensBonds(const SolverOptions& o) {
+    for (double g : o.fractureEnergy)
+        if (g > 0.0) return true;
+    return false;
+}
+
 /// Wall time spent in each phase of the steps taken so far [s] (for benchmarks and logs).
 struct PhaseTimes {
     double kinematicsAndStress = 0.0;  ///< steps 3–4
@@ -116,8 +124,6 @@ class VelocityVerlet {
 
   private:
     void computeAccelerations(State& state);
-    /// True when some body's bonds soften (SolverOptions::fractureEnergy).
-    bool softeningBonds() const;
 
     const Reference& ref_;
     std::vector<BodyRange> bodies_;
