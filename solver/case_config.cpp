@@ -45,8 +45,10 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.cfl = r.number("cfl", c.cfl, Sign::Positive);
     if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
     c.kappa = r.number("kappa", c.kappa, Sign::Positive);
-    const std::string mass = r.choice("mass", "quadrature", {"quadrature", "mesh"});
-    c.massBasis = mass == "mesh" ? MassBasis::MeshVolume : MassBasis::QuadratureVolume;
+    const std::string mass = r.choice("mass", "normalized", {"normalized", "quadrature", "mesh"});
+    c.massBasis = mass == "mesh"         ? MassBasis::MeshVolume
+                  : mass == "quadrature" ? MassBasis::QuadratureVolume
+                                         : MassBasis::NormalizedQuadratureVolume;
     c.dimension = r.choice("dimension", "", {"3d", "plane_strain", "axisymmetric"});
     c.dimensionLine = run->get("dimension")
                           ? static_cast<int>(run->get("dimension")->source().begin.line)

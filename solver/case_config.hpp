@@ -96,8 +96,9 @@ struct CaseConfig {
     double historyInterval = 0.0;
     double cfl = 0.3;
     double kappa = 1.2;
-    /// [run] mass: "quadrature" (ρ0 ω det M, default) or "mesh" (ρ0 × the cell's meshed volume).
-    MassBasis massBasis = MassBasis::QuadratureVolume;
+    /// [run] mass: "normalized" (ρ0 ω det M scaled per body to its meshed volume, default),
+    /// "quadrature" (ρ0 ω det M) or "mesh" (ρ0 × the cell's meshed volume).
+    MassBasis massBasis = MassBasis::NormalizedQuadratureVolume;
     /// [run] dimension: "3d", "plane_strain" or "axisymmetric"; empty: the particle file's
     /// (a 2-D file runs in plane strain). Checked against the file by the run.
     std::string dimension;

@@ -71,12 +71,18 @@ enum class MassBasis {
     /// where V ≠ ω det M inertia and stiffness see different volumes (a bar with a section
     /// graded 4:1 carries a pulse 4.5 % fast).
     MeshVolume,
+    /// ω det M times one factor per body, its meshed volume over Σ ω det M, in the energy and
+    /// the mass alike: the body's mass is exact and inertia and stiffness still see one volume.
+    /// A uniform factor scales every force of a body as it scales its mass (the correction G
+    /// and the interface weights do not depend on it), so a body on its own moves as with
+    /// QuadratureVolume; what changes is its mass against other bodies and external loads.
+    NormalizedQuadratureVolume,
 };
 
 struct Reference {
     Dimension dim;
-    double kappa = 1.2;                                 ///< h = κΔθ (DESIGN §3)
-    MassBasis massBasis = MassBasis::QuadratureVolume;  ///< set before computeGeometry
+    double kappa = 1.2;                                           ///< h = κΔθ (DESIGN §3)
+    MassBasis massBasis = MassBasis::NormalizedQuadratureVolume;  ///< set before computeGeometry
     std::vector<LatticeSpace> spaces;
 
     // Per particle, from the particle source.
@@ -99,7 +105,9 @@ struct Reference {
     // Derived once (computeGeometry).
     std::vector<double> omega;  ///< θ-volume ω = Δθ^d (DESIGN §3; folded into pairs.table)
     std::vector<Mat3> G;        ///< Q^T B^{-T}: maps ∇_θ W_ab to the physical g_ab
-    std::vector<double> quadVolume;  ///< V = ω det M: the volume in the energy Σ V Ψ(F) (DESIGN §4)
+    /// V = ω det M (times the body's factor with NormalizedQuadratureVolume): the volume in the
+    /// energy Σ V Ψ(F) (DESIGN §4)
+    std::vector<double> quadVolume;
     /// ρ0 V, V by massBasis [kg]
     std::vector<double> mass;
     std::vector<double> spacing;  ///< smallest physical particle spacing Δθ·σ_min(M) [m]

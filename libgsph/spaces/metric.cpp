@@ -3,8 +3,10 @@
 
 #include <Eigen/Dense>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/error.hpp"
 #include "core/parallel.hpp"
@@ -65,6 +67,31 @@ ParticleMetric particleMetric(const Reference& ref, Index a, const std::uint8_t*
     return pm;
 }
 
+namespace {
+
+// MassBasis::NormalizedQuadratureVolume: each body's V = ω det M scaled by one factor, its meshed
+// volume over Σ ω det M (summed in particle order: the same bits on any thread count), and the
+// mass ρ0 V from it. Before the interface weights, which read V (they depend only on its ratios).
+void normalizeBodyVolumes(Reference& ref) {
+    const std::size_t n = ref.quadVolume.size();
+    const auto bodyOf = [&](std::size_t a) {
+        return ref.body.empty() ? std::size_t{0} : static_cast<std::size_t>(ref.body[a]);
+    };
+    std::size_t bodies = 0;
+    for (std::size_t a = 0; a < n; ++a) bodies = std::max(bodies, bodyOf(a) + 1);
+    std::vector<double> quadrature(bodies, 0.0), meshed(bodies, 0.0);
+    for (std::size_t a = 0; a < n; ++a) {
+        quadrature[bodyOf(a)] += ref.quadVolume[a];
+        meshed[bodyOf(a)] += ref.meshVolume(a);
+    }
+    for (std::size_t a = 0; a < n; ++a) {
+        ref.quadVolume[a] *= meshed[bodyOf(a)] / quadrature[bodyOf(a)];
+        ref.mass[a] = ref.density[a] * ref.quadVolume[a];
+    }
+}
+
+}  // namespace
+
 void computeGeometry(Reference& ref) {
     const Index n = ref.size();
     if (ref.pairs.particles() != n)
@@ -78,7 +105,7 @@ void computeGeometry(Reference& ref) {
     ref.mass.resize(N);
     if (ref.density.size() != N) throw InputError("reference has no density per particle");
     const bool meshMass = ref.massBasis == MassBasis::MeshVolume;
-    if (meshMass && ref.volume.size() != N)
+    if (ref.massBasis != MassBasis::QuadratureVolume && ref.volume.size() != N)
         throw InputError("reference has no meshed volume per particle for its mass");
     if (ref.dim.axisymmetric) checkAxisymmetric(ref);
     ref.spacing.resize(N);
@@ -120,6 +147,7 @@ void computeGeometry(Reference& ref) {
                                      ": metric ∂X/∂θ is singular or inverted (det ≤ 0)",
                                  static_cast<long>(a));
     }
+    if (ref.massBasis == MassBasis::NormalizedQuadratureVolume) normalizeBodyVolumes(ref);
     markOversetBand(ref);
     correctInterfaceWeights(ref);
 }
