@@ -7,10 +7,10 @@
 // types of core/types.hpp, so code outside the hot loops still reads like the formulas.
 // Owns its storage; sized once by resize() (no allocation inside a step).
 //
-// The components sit kStrideLines apart modulo 64 cache lines: a loop reads all of them at the
-// same particle index, and with a stride of a power of two (32³ or 64³ particles) every one
-// fell into the same set of the L1 and L2 caches, whose ways they then evicted from each other
-// (the elastic step 25 % slower at 32³ and 64³ than at 46³ particles, docs/performance.md).
+// The components sit cacheSpreadStride(n) apart: a loop reads all of them at the same particle
+// index, and when they sat n apart with n a multiple of 512 (32³, 40³, 64³ particles) all of them
+// fell into one set of the L1 and L2 caches and evicted each other (the step 0.55–0.65 of its
+// speed at other sizes, docs/performance.md).
 #pragma once
 
 #include <cstddef>
@@ -20,6 +20,16 @@
 
 namespace gsph {
 
+/// The distance, in doubles, at which to lay the components of a per-entry array of n entries
+/// (SoaField here, the staged CSR weights): whole 64-byte cache lines, then up to 63 more so that
+/// it is ≡ 39 lines (mod 64). An odd number of lines puts the components c·stride into distinct
+/// sets of any cache of 64·2^k sets.
+inline std::size_t cacheSpreadStride(std::size_t n) {
+    constexpr std::size_t line = 8, spread = 39;  // doubles per line; odd, near 64/φ
+    const std::size_t lines = (n + line - 1) / line;
+    return (lines + (spread + 64 - lines % 64) % 64) * line;
+}
+
 template <int Rows, int Cols>
 class SoaField {
   public:
@@ -28,10 +38,7 @@ class SoaField {
 
     void resize(std::size_t n) {
         n_ = n;
-        // Whole cache lines, then up to 63 more, so that the stride ≡ kStrideLines (mod 64): odd,
-        // so components c·stride fall into distinct sets of any cache of up to 64·2^k sets.
-        const std::size_t lines = (n + kLine - 1) / kLine;
-        stride_ = (lines + (kStrideLines + 64 - lines % 64) % 64) * kLine;
+        stride_ = cacheSpreadStride(n);
         data_.assign(stride_ * kComponents, 0.0);
     }
     std::size_t size() const { return n_; }
@@ -55,8 +62,6 @@ class SoaField {
     }
 
   private:
-    static constexpr std::size_t kLine = 8;          ///< doubles per 64-byte cache line
-    static constexpr std::size_t kStrideLines = 39;  ///< odd, near 64/φ: spreads the sets
     std::size_t n_ = 0, stride_ = 0;
     std::vector<double> data_;
 };

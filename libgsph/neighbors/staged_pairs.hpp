@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "core/lanes.hpp"
+#include "core/soa_field.hpp"
 #include "core/types.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/bond_view.hpp"
@@ -45,9 +46,10 @@ struct StagedPairs {
     std::vector<double> wOwn, wT, gQ, gN, Y, Y2, hBar, hgWeight, share;
     std::size_t stride = 0;
     void resize(std::size_t n) {
-        stride = n;
-        b.resize(n), Y2.resize(n), hBar.resize(n), hgWeight.resize(n), share.resize(n);
-        wOwn.resize(3 * n), wT.resize(3 * n), gQ.resize(3 * n), gN.resize(3 * n), Y.resize(3 * n);
+        stride = cacheSpreadStride(n);  // the components of a vector weight in distinct sets
+        b.resize(stride), Y2.resize(stride), hBar.resize(stride), hgWeight.resize(stride);
+        share.resize(stride), wOwn.resize(3 * stride), wT.resize(3 * stride), gQ.resize(3 * stride);
+        gN.resize(3 * stride), Y.resize(3 * stride);
     }
 };
 
@@ -60,9 +62,9 @@ struct StripPairs {
     std::vector<double> wOwn, wT, g, W, valid;
     std::size_t stride = 0;
     void resize(std::size_t n) {
-        stride = n;
-        W.resize(n), valid.resize(n);
-        wOwn.resize(3 * n), wT.resize(3 * n), g.resize(3 * n);
+        stride = cacheSpreadStride(n);
+        W.resize(stride), valid.resize(stride);
+        wOwn.resize(3 * stride), wT.resize(3 * stride), g.resize(3 * stride);
     }
 };
 
