@@ -45,10 +45,13 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.cfl = r.number("cfl", c.cfl, Sign::Positive);
     if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
     c.kappa = r.number("kappa", c.kappa, Sign::Positive);
-    const std::string mass = r.choice("mass", "normalized", {"normalized", "quadrature", "mesh"});
-    c.massBasis = mass == "mesh"         ? MassBasis::MeshVolume
-                  : mass == "quadrature" ? MassBasis::QuadratureVolume
-                                         : MassBasis::NormalizedQuadratureVolume;
+    const std::string mass =
+        r.choice("mass", massBasisKey(c.massBasis),
+                 {massBasisKey(MassBasis::NormalizedQuadratureVolume),
+                  massBasisKey(MassBasis::QuadratureVolume), massBasisKey(MassBasis::MeshVolume)});
+    for (MassBasis b : {MassBasis::NormalizedQuadratureVolume, MassBasis::QuadratureVolume,
+                        MassBasis::MeshVolume})
+        if (mass == massBasisKey(b)) c.massBasis = b;
     c.dimension = r.choice("dimension", "", {"3d", "plane_strain", "axisymmetric"});
     c.dimensionLine = run->get("dimension")
                           ? static_cast<int>(run->get("dimension")->source().begin.line)
@@ -304,6 +307,18 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
             c.probes.push_back(std::move(p));
         }
     return c;
+}
+
+std::string massBasisKey(MassBasis basis) {
+    switch (basis) {
+        case MassBasis::QuadratureVolume:
+            return "quadrature";
+        case MassBasis::MeshVolume:
+            return "mesh";
+        case MassBasis::NormalizedQuadratureVolume:
+            break;
+    }
+    return "normalized";
 }
 
 }  // namespace gsph::solver

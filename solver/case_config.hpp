@@ -129,4 +129,7 @@ bool namesBody(const std::string& group, const ParticleFile& file, std::size_t i
 /// Parses and validates a case file. Throws InputError "FILE:LINE: ..." on any fault.
 CaseConfig readCaseFile(const std::filesystem::path& path);
 
+/// The [run] mass key's word for a basis ("normalized", "quadrature", "mesh").
+std::string massBasisKey(MassBasis basis);
+
 }  // namespace gsph::solver

@@ -283,6 +283,7 @@ class RunOutputs {
         // The intervals the counters count in: a restart with other intervals re-counts them.
         r.texts["output_interval"] = exactText(c_.outputInterval);
         r.texts["checkpoint_interval"] = exactText(c_.checkpointInterval);
+        r.texts["mass"] = massBasisKey(c_.massBasis);  // a restart continues with it
         r.texts["history"] = history_.table().text();
         if (!probes_.empty()) r.texts["probes"] = probes_.table().text();
         writeCheckpoint(checkpointPath(), s, r, provenance_);
@@ -480,6 +481,21 @@ void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
     log.add(line);
 }
 
+// The mass basis a checkpoint's run used: its record's, or, in a checkpoint written before the
+// record held it, the default of then ("quadrature") unless the case chose "mesh" (never a
+// default). A restart continues with it, so that it goes on as the run it continues.
+MassBasis massBasisOf(const RunRecord& run, const CaseConfig& c) {
+    const auto it = run.texts.find("mass");
+    const std::string key = it != run.texts.end() ? it->second
+                            : c.massBasis == MassBasis::MeshVolume
+                                ? massBasisKey(MassBasis::MeshVolume)
+                                : massBasisKey(MassBasis::QuadratureVolume);
+    for (MassBasis b : {MassBasis::NormalizedQuadratureVolume, MassBasis::QuadratureVolume,
+                        MassBasis::MeshVolume})
+        if (key == massBasisKey(b)) return b;
+    throw InputError("checkpoint: unknown mass basis '" + key + "'");
+}
+
 }  // namespace
 
 std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& runDir) {
@@ -497,7 +513,8 @@ std::vector<std::filesystem::path> earlierRunFiles(const std::filesystem::path& 
     return out;
 }
 
-RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
+RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
+    CaseConfig c = caseConfig;
     ParticleFile file;
     try {
         file = readParticleFileIsolated(c.particles);
@@ -511,6 +528,11 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
     if (!options.restart.empty()) {
         checkpoint = readCheckpoint(options.restart);
         checkInputs(checkpoint->run.inputs, inputs, options.restart);
+        try {
+            c.massBasis = massBasisOf(checkpoint->run, c);
+        } catch (const InputError& e) {
+            throw InputError(options.restart.string() + ": " + e.what());
+        }
     }
     // A fresh run never mixes its files with an earlier run's (gsph-post would read both).
     if (!checkpoint) {
@@ -543,6 +565,10 @@ RunSummary runCase(const CaseConfig& c, const RunOptions& options) {
         checkIntervals(c, sim.state().initialDt);
         options.log->add("restart from " + options.restart.string() +
                          format(": t = %.6e s, step %ld", sim.state().time, sim.state().step));
+        if (c.massBasis != caseConfig.massBasis)
+            options.log->add("mass = \"" + massBasisKey(c.massBasis) +
+                             "\" as the checkpoint's run (the case's is \"" +
+                             massBasisKey(caseConfig.massBasis) + "\")");
     } else {
         std::vector<Vec3> initial(static_cast<std::size_t>(ref.size()));
         for (Index a = 0; a < ref.size(); ++a)

@@ -323,6 +323,50 @@ long particleNamedIn(const std::string& err) {
     return std::regex_search(err, m, pattern) ? std::stol(m[1]) : -1;
 }
 
+// A checkpoint records the run's mass basis, and a restart continues with it: one written
+// before the record held it (when the default was "quadrature") continues as a quadrature run
+// although the case, unchanged, now selects "normalized" by default. Made here from a run of
+// the case with mass = "quadrature" stopped at step 150, its record then given the default
+// case's inputs and stripped of the basis; the restart with the default case must end as the
+// quadrature run run straight through, every snapshot's dataset bytewise.
+TEST_F(Restart, AnOlderCheckpointContinuesWithTheMassBasisOfItsRun) {
+    const fs::path quadratureCase = dir_ / "quadrature.toml";
+    std::string text = readText(kSampleCase);
+    const std::size_t run = text.find("[run]\n");
+    ASSERT_NE(run, std::string::npos);
+    text.insert(run + 6, "mass = \"quadrature\"\n");
+    std::ofstream(quadratureCase) << text;
+    const fs::path a = dir_ / "A", b = dir_ / "B", defaults = dir_ / "defaults";
+    ASSERT_EQ(runCommand(solve(quadratureCase, particles_, a)).status, 0);
+    ASSERT_EQ(runCommand(solve(quadratureCase, particles_, b, "--stop-after-steps 150")).status,
+              kExitInterrupted);
+    ASSERT_EQ(runCommand(solve(kSampleCase, particles_, defaults, "--stop-after-steps 1")).status,
+              kExitInterrupted);
+    const Checkpoint current = readCheckpoint(defaults / "checkpoint.h5");
+    ASSERT_EQ(current.run.texts.count("mass"), 1u);
+    EXPECT_EQ(current.run.texts.at("mass"), "normalized");
+
+    Checkpoint older = readCheckpoint(b / "checkpoint.h5");
+    EXPECT_EQ(older.run.texts.at("mass"), "quadrature");
+    older.run.texts.erase("mass");
+    older.run.inputs = current.run.inputs;
+    writeCheckpoint(b / "checkpoint.h5", older.state, older.run, older.provenance);
+    const auto r = runCommand(kSolve + " " + quote(kSampleCase.string()) + " --particles " +
+                              quote(particles_.string()) + " --restart " +
+                              quote((b / "checkpoint.h5").string()));
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("mass = \"quadrature\" as the checkpoint's run (the case's is "
+                         "\"normalized\")"),
+              std::string::npos)
+        << r.out;
+    // The continued run records the basis it kept; its final checkpoint differs from A's only
+    // in the case it names (the inputs), so the snapshots and history are compared.
+    EXPECT_EQ(readCheckpoint(b / "checkpoint.h5").run.texts.at("mass"), "quadrature");
+    fs::remove(a / "checkpoint.h5");
+    fs::remove(b / "checkpoint.h5");
+    expectSameOutputs(a, b, 6);
+}
+
 TEST_F(Restart, InvertedParticleStopsTheRunNamingIt) {
     // 10 km/s at a Courant number of 0.9: within a step the shock folds a particle (J ≤ 0).
     // (With the viscosity's compression switch the driven layer is crushed ever thinner
