@@ -11,6 +11,7 @@
 
 #include "contact/penalty_contact.hpp"
 #include "spaces/analytic_maps.hpp"
+#include "support/lattice_fixtures.hpp"
 
 namespace gsph::testing {
 
@@ -28,20 +29,10 @@ inline Reference boxBodies(const std::vector<Box>& boxes, double kappa = 1.2, in
         const Box& box = boxes[b];
         const Reference r = latticeReference(gradedBoxMap(box.size, {}, box.origin), dim, box.cells,
                                              box.density, kappa, static_cast<Index>(b));
-        if (b == 0) {
+        if (b == 0)
             out = r;
-            continue;
-        }
-        const auto space = static_cast<Index>(out.spaces.size());
-        out.spaces.push_back(r.spaces[0]);
-        for (std::size_t p = 0; p < r.X.size(); ++p) {
-            out.X.push_back(r.X[p]);
-            out.theta.push_back(r.theta[p]);
-            out.density.push_back(r.density[p]);
-            out.volume.push_back(r.volume[p]);
-            out.body.push_back(r.body[p]);
-            out.space.push_back(space);
-        }
+        else
+            appendSpace(out, r, static_cast<Index>(b));
     }
     return out;
 }

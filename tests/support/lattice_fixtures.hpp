@@ -25,6 +25,21 @@ inline Reference builtReference(const AnalyticMap& map, int dim, std::array<int,
     return ref;
 }
 
+/// Appends the particles of `from` (a reference of one lattice space, before its pairs) to
+/// `into` as a new space of body `body`; bodies must come in order (Reference invariant).
+inline void appendSpace(Reference& into, const Reference& from, Index body) {
+    const auto space = static_cast<Index>(into.spaces.size());
+    into.spaces.push_back(from.spaces[0]);
+    for (std::size_t p = 0; p < from.X.size(); ++p) {
+        into.X.push_back(from.X[p]);
+        into.theta.push_back(from.theta[p]);
+        into.density.push_back(from.density[p]);
+        into.volume.push_back(from.volume[p]);
+        into.body.push_back(body);
+        into.space.push_back(space);
+    }
+}
+
 /// Particles whose lattice distance to every non-periodic boundary is at least `margin` cells.
 inline std::vector<Index> interiorParticles(const Reference& ref, int margin) {
     const LatticeSpace& s = ref.spaces[0];

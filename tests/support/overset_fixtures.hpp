@@ -13,6 +13,7 @@
 #include "neighbors/theta_search.hpp"
 #include "spaces/analytic_maps.hpp"
 #include "spaces/metric.hpp"
+#include "support/lattice_fixtures.hpp"
 
 namespace gsph::testing {
 
@@ -39,15 +40,7 @@ inline TwoBlocks twoBlocks(int dim, int n, int ratio, double kappa = 1.2, double
     const Reference b =
         latticeReference(gradedBoxMap(Vec3(Lx, H, dim == 3 ? H : 1.0), {}, Vec3(Lx, 0, 0)), dim,
                          cellsB, density, kappa);
-    a.spaces.push_back(b.spaces[0]);
-    for (std::size_t p = 0; p < b.X.size(); ++p) {
-        a.X.push_back(b.X[p]);
-        a.theta.push_back(b.theta[p]);
-        a.density.push_back(b.density[p]);
-        a.volume.push_back(b.volume[p]);
-        a.body.push_back(0);
-        a.space.push_back(1);
-    }
+    appendSpace(a, b, 0);
     // θ of X in each block's space (Δθ = 1: θ = (X − origin)/spacing; z stays 0 in 2-D).
     const double spacing[2] = {out.coarse, out.fine};
     const Vec3 origin[2] = {Vec3::Zero(), Vec3(Lx, 0, 0)};

@@ -95,15 +95,7 @@ TEST(MassBasis, EachBodyGetsItsOwnFactor) {
     Reference two = gradedBlock(MassBasis::NormalizedQuadratureVolume);
     const Reference second =
         gradedBlock(MassBasis::NormalizedQuadratureVolume, Vec3(0.0, 0.006, 0.0), 1, 2.0);
-    two.spaces.push_back(second.spaces[0]);
-    for (std::size_t p = 0; p < second.X.size(); ++p) {
-        two.X.push_back(second.X[p]);
-        two.theta.push_back(second.theta[p]);
-        two.density.push_back(second.density[p]);
-        two.volume.push_back(second.volume[p]);
-        two.body.push_back(1);
-        two.space.push_back(1);
-    }
+    testing::appendSpace(two, second, 1);
     Reference quadrature = two;
     quadrature.massBasis = MassBasis::QuadratureVolume;
     for (Reference* r : {&two, &quadrature}) {
