@@ -13,6 +13,10 @@
 namespace gsph::solver {
 namespace {
 
+// The [run] mass words in the order the case reader's error lists them.
+constexpr MassBasis kMassBases[] = {MassBasis::NormalizedQuadratureVolume,
+                                    MassBasis::QuadratureVolume, MassBasis::MeshVolume};
+
 using Sign = TomlKeys::Sign;
 
 const toml::array* arrayOfTables(const std::string& file, const toml::table& root,
@@ -45,13 +49,9 @@ void readRun(const std::string& file, const toml::table& root, CaseConfig& c) {
     c.cfl = r.number("cfl", c.cfl, Sign::Positive);
     if (c.cfl > 1.0) r.fail("cfl", "'cfl' in [run] must be ≤ 1");
     c.kappa = r.number("kappa", c.kappa, Sign::Positive);
-    const std::string mass =
-        r.choice("mass", massBasisKey(c.massBasis),
-                 {massBasisKey(MassBasis::NormalizedQuadratureVolume),
-                  massBasisKey(MassBasis::QuadratureVolume), massBasisKey(MassBasis::MeshVolume)});
-    for (MassBasis b : {MassBasis::NormalizedQuadratureVolume, MassBasis::QuadratureVolume,
-                        MassBasis::MeshVolume})
-        if (mass == massBasisKey(b)) c.massBasis = b;
+    std::vector<std::string> bases;
+    for (MassBasis b : kMassBases) bases.push_back(massBasisKey(b));
+    c.massBasis = *massBasisNamed(r.choice("mass", massBasisKey(c.massBasis), bases));
     c.dimension = r.choice("dimension", "", {"3d", "plane_strain", "axisymmetric"});
     c.dimensionLine = run->get("dimension")
                           ? static_cast<int>(run->get("dimension")->source().begin.line)
@@ -307,6 +307,12 @@ CaseConfig readCaseFile(const std::filesystem::path& path) {
             c.probes.push_back(std::move(p));
         }
     return c;
+}
+
+std::optional<MassBasis> massBasisNamed(const std::string& key) {
+    for (MassBasis b : kMassBases)
+        if (key == massBasisKey(b)) return b;
+    return std::nullopt;
 }
 
 std::string massBasisKey(MassBasis basis) {

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -131,5 +132,7 @@ CaseConfig readCaseFile(const std::filesystem::path& path);
 
 /// The [run] mass key's word for a basis ("normalized", "quadrature", "mesh").
 std::string massBasisKey(MassBasis basis);
+/// The basis a [run] mass word names (none for another word).
+std::optional<MassBasis> massBasisNamed(const std::string& key);
 
 }  // namespace gsph::solver

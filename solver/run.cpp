@@ -486,14 +486,11 @@ void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
 // default). A restart continues with it, so that it goes on as the run it continues.
 MassBasis massBasisOf(const RunRecord& run, const CaseConfig& c) {
     const auto it = run.texts.find("mass");
-    const std::string key = it != run.texts.end() ? it->second
-                            : c.massBasis == MassBasis::MeshVolume
-                                ? massBasisKey(MassBasis::MeshVolume)
-                                : massBasisKey(MassBasis::QuadratureVolume);
-    for (MassBasis b : {MassBasis::NormalizedQuadratureVolume, MassBasis::QuadratureVolume,
-                        MassBasis::MeshVolume})
-        if (key == massBasisKey(b)) return b;
-    throw InputError("checkpoint: unknown mass basis '" + key + "'");
+    if (it == run.texts.end())
+        return c.massBasis == MassBasis::MeshVolume ? MassBasis::MeshVolume
+                                                    : MassBasis::QuadratureVolume;
+    if (const std::optional<MassBasis> basis = massBasisNamed(it->second)) return *basis;
+    throw InputError("checkpoint: unknown mass basis '" + it->second + "'");
 }
 
 }  // namespace
