@@ -10,6 +10,7 @@ set(GSPH_MODULE_LAYERS
     kernel=1
     particles=2  # the reference configuration, its pair list, the state
     neighbors=3 overset=3 io=3
+    distributed=4  # the split of a run over processes: needs the blocks and the state
     spaces=4 kinematics=4
     materials=5 reference=5
     failure=6

@@ -8,6 +8,10 @@ find_package(nanoflann REQUIRED PATHS /usr/share/nanoflann/cmake)
 set(HDF5_PREFER_PARALLEL OFF)
 find_package(HDF5 REQUIRED COMPONENTS C)
 
+if(GSPH_MPI)
+  find_package(MPI REQUIRED COMPONENTS CXX)
+endif()
+
 # gmsh ships no CMake config.
 find_path(GMSH_INCLUDE_DIR gmsh.h REQUIRED)
 find_library(GMSH_LIBRARY gmsh REQUIRED)

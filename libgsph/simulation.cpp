@@ -86,6 +86,16 @@ std::vector<Vec3> Simulation::contactForces() const {
 void Simulation::makeIntegrator() {
     integrator_ = std::make_unique<VelocityVerlet>(ref_, bodies_, constraints_, options_, loads_,
                                                    walls_, stages_);
+    if (domain_) integrator_->setDomain(domain_);
+}
+
+void Simulation::setDomain(std::shared_ptr<Domain> domain) {
+    if (integrator_) throw Error("the domain must be set before the first step");
+    domain_ = std::move(domain);
+}
+
+void Simulation::gatherState() {
+    if (domain_ && domain_->processes() > 1) domain_->gather(state_);
 }
 
 void Simulation::start() {

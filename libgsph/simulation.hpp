@@ -50,6 +50,14 @@ class Simulation {
     /// add their forces after the internal force, contact, walls and constant loads, in the
     /// order added.
     void addStage(std::shared_ptr<ForceStage> stage);
+    /// Splits the run over processes (distributed/domain.hpp; before the first step): this
+    /// process advances its own particles, and state() holds the others' only after
+    /// gatherState(), on the process that writes the files. Throws InputError when the run
+    /// cannot be split yet (VelocityVerlet::setDomain).
+    void setDomain(std::shared_ptr<Domain> domain);
+    /// Collective: the process that writes the files gets every particle's state (nothing to do
+    /// in a serial run).
+    void gatherState();
 
     /// Computes the initial accelerations and time step; called by the first step if needed.
     void start();
@@ -94,6 +102,7 @@ class Simulation {
     std::vector<std::shared_ptr<ForceStage>> stages_;
     State state_;
     std::unique_ptr<VelocityVerlet> integrator_;
+    std::shared_ptr<Domain> domain_;  ///< null: serial
 };
 
 }  // namespace gsph

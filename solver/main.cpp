@@ -21,12 +21,17 @@
 // output file could not be written (disk full, quota, file-size limit: the message names the
 // file and the system's reason; every file it would have replaced, the last good checkpoint
 // included, is kept).
+// Built with GSPH_MPI, `mpirun -np N gsph-solve CASE.toml ...` splits the run over N processes
+// (docs/mpi.md): the same files, the first process writes them. A fault on any process ends all
+// of them (MPI_Abort) with the exit code above; a numerical breakdown then writes no final
+// snapshot.
 #include <omp.h>
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -37,6 +42,11 @@
 #include "run.hpp"
 #include "run_log.hpp"
 #include "signals.hpp"
+#ifdef GSPH_MPI
+#include <mpi.h>
+
+#include "distributed/mpi_domain.hpp"
+#endif
 
 namespace {
 
@@ -58,7 +68,37 @@ bool flushLog(gsph::solver::RunLog& log) {
 
 }  // namespace
 
+// The processes of a split run (1: serial), this one's rank; ends them all on a fault.
+struct Processes {
+    int count = 1, rank = 0;
+#ifdef GSPH_MPI
+    Processes(int& argc, char**& argv) {
+        int provided = 0;
+        MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+        MPI_Comm_size(MPI_COMM_WORLD, &count);
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    }
+    ~Processes() {
+        MPI_Finalize();
+    }
+    [[noreturn]] void abort(int status) const {
+        std::fflush(stdout);
+        std::fflush(stderr);
+        MPI_Abort(MPI_COMM_WORLD, status);
+        std::_Exit(status);
+    }
+#else
+    Processes(int&, char**&) {}
+    [[noreturn]] void abort(int status) const {
+        std::_Exit(status);
+    }
+#endif
+    Processes(const Processes&) = delete;
+    Processes& operator=(const Processes&) = delete;
+};
+
 int main(int argc, char** argv) {
+    Processes processes(argc, argv);
     // A file-size limit (ulimit -f) is a failed write with its own message, not a kill.
     std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"gsph-solve: total Lagrangian GSPH solver"};
@@ -108,6 +148,11 @@ int main(int argc, char** argv) {
     gsph::solver::RunLog log;
     gsph::solver::RunOptions options;
     options.log = &log;
+    const bool writes = processes.rank == 0;
+    log.quiet = !writes;
+#ifdef GSPH_MPI
+    if (processes.count > 1) options.domain = gsph::makeMpiDomain();
+#endif
     options.restart = restart;
     options.stopAfterSteps = stopAfterSteps;
     options.overwrite = overwrite;
@@ -130,15 +175,23 @@ int main(int argc, char** argv) {
                          : caseName.empty() || caseName == "."
                              ? std::filesystem::path("run") / config.caseFile.stem()
                              : std::filesystem::path("run") / caseName;
-        options.progress = isatty(STDOUT_FILENO) != 0 ? gsph::solver::ProgressBar::Mode::Bar
-                                                      : gsph::solver::ProgressBar::Mode::Lines;
-        log.open(options.runDir / "run.log", !restart.empty());
-        log.add("gsph-solve " + std::string(gsph::kVersion) + ": " + casePath + " -> " +
-                options.runDir.string() + " (" + std::to_string(omp_get_max_threads()) +
-                " threads)");
+        options.progress = !writes                      ? gsph::solver::ProgressBar::Mode::Off
+                           : isatty(STDOUT_FILENO) != 0 ? gsph::solver::ProgressBar::Mode::Bar
+                                                        : gsph::solver::ProgressBar::Mode::Lines;
+        if (writes) log.open(options.runDir / "run.log", !restart.empty());
+        log.add(
+            "gsph-solve " + std::string(gsph::kVersion) + ": " + casePath + " -> " +
+            options.runDir.string() + " (" + std::to_string(omp_get_max_threads()) + " threads" +
+            (processes.count > 1 ? " on each of " + std::to_string(processes.count) + " processes"
+                                 : std::string()) +
+            ")");
         summary = gsph::solver::runCase(config, options);
     } catch (const gsph::NumericalError& e) {
-        std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
+        // Split, only the process that owns the particle knows it: each says what it saw.
+        if (processes.count > 1)
+            std::fprintf(stderr, "gsph-solve: process %d: error: %s\n", processes.rank, e.what());
+        else
+            std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
         log.record(std::string("error: ") + e.what());
         status = kExitNumerical;
     } catch (const gsph::WriteError& e) {
@@ -152,20 +205,23 @@ int main(int argc, char** argv) {
         log.record(std::string("error: ") + e.what());
         status = kExitWriteFailed;
     } catch (const std::exception& e) {  // gsph::Error, and e.g. a folder that cannot be made
-        std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
+        // The same on every process of a split run (bad input): said once.
+        if (writes) std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
         log.record(std::string("error: ") + e.what());
         status = kExitError;
     }
-    if (summary.interrupted) {
+    if (summary.interrupted && writes) {
         std::fprintf(stderr,
                      "gsph-solve: interrupted by %s at t = %.6e s (step %ld); continue with: "
                      "gsph-solve %s%s --restart %s\n",
                      summary.stopReason.c_str(), summary.time, summary.steps, casePath.c_str(),
                      particles.empty() ? "" : (" --particles " + particles).c_str(),
                      summary.checkpoint.string().c_str());
-        status = kExitInterrupted;
     }
+    if (summary.interrupted) status = kExitInterrupted;
     // A run refused before its first snapshot leaves no log (nor anything else).
     if (log.written() && !flushLog(log)) status = status == 0 ? kExitError : status;
+    // Split, the other processes may be waiting for this one: a fault ends them all.
+    if (processes.count > 1 && status != 0 && status != kExitInterrupted) processes.abort(status);
     return status;
 }

@@ -210,10 +210,12 @@ std::vector<Wall> wallsOf(const CaseConfig& c) {
 class RunOutputs {
   public:
     /// `file`: the run's particle file (its bodies' names for the columns and the probes).
-    RunOutputs(const CaseConfig& c, const RunOptions& options, const Simulation& sim,
+    RunOutputs(const CaseConfig& c, const RunOptions& options, Simulation& sim,
                const ParticleFile& file, std::vector<CheckpointInput> inputs)
         : c_(c),
           options_(options),
+          sim_(sim),
+          writes_(!options.domain || options.domain->writesFiles()),
           log_(*options.log),
           ref_(sim.reference()),
           inputs_(std::move(inputs)),
@@ -263,16 +265,20 @@ class RunOutputs {
     }
     /// A snapshot without a history row (the failing state of a numerical breakdown).
     void writeSnapshotOnly(const State& s) {
+        gather();
         char name[64];
         std::snprintf(name, sizeof name, "snapshot_%06ld.h5", schedule.nextSnapshot++);
+        ++snapshots_;
+        if (!writes_) return;
         writeSnapshot(options_.runDir / name, ref_, s, provenance_);
         history_.table().flush();
         if (!probes_.empty()) probes_.table().flush();
-        ++snapshots_;
         log_.add(std::string(name) + format(": t = %.6e s, step %ld", s.time, s.step));
         log_.flush();
     }
     void checkpoint(const State& s) {
+        gather();
+        if (!writes_) return;
         const auto t0 = Clock::now();
         RunRecord r;
         r.inputs = inputs_;
@@ -374,12 +380,24 @@ class RunOutputs {
   private:
     /// A row of history.csv and of probes.csv.
     void addRow(const Simulation& sim) {
+        gather();
         history_.add(sim.state(), sim.energy(), sim.wallForces(), sim.contactForces());
         if (!probes_.empty()) probes_.add(ref_, sim.state());
     }
 
+    /// A split run's state is whole on the writing process only after a gather (collective:
+    /// every process calls it at the same points, once per step at most).
+    void gather() {
+        if (gatheredStep_ == sim_.state().step) return;
+        sim_.gatherState();
+        gatheredStep_ = sim_.state().step;
+    }
+
     const CaseConfig& c_;
     const RunOptions& options_;
+    Simulation& sim_;
+    bool writes_;  ///< this process writes the files (the others keep them in memory only)
+    long gatheredStep_ = -1;
     RunLog& log_;
     const Reference& ref_;
     std::vector<CheckpointInput> inputs_;
@@ -540,14 +558,18 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                              earlier.front().filename().string() +
                              "); give another -o, continue it with --restart, or pass "
                              "--overwrite to replace it");
-        for (const std::filesystem::path& p : earlier) std::filesystem::remove(p);
+        if (!options.domain || options.domain->writesFiles())
+            for (const std::filesystem::path& p : earlier) std::filesystem::remove(p);
     }
     BodySetup bodies = matchBodies(c, file);
     const std::unique_ptr<Simulation> simulation = buildSimulation(c, file, bodies);
     Simulation& sim = *simulation;
     const Reference& ref = sim.reference();
-    std::filesystem::create_directories(options.runDir);
-    if (const int stale = removeStaleTemporaries(options.runDir))
+    const bool split = options.domain && options.domain->processes() > 1;
+    if (split) sim.setDomain(options.domain);
+    const bool writes = !options.domain || options.domain->writesFiles();
+    if (writes) std::filesystem::create_directories(options.runDir);
+    if (const int stale = writes ? removeStaleTemporaries(options.runDir) : 0)
         options.log->add("removed " + std::to_string(stale) +
                          " temporary file(s) that an earlier, killed process left in " +
                          options.runDir.string());
@@ -592,11 +614,14 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         out.snapshot(sim);
     }
 
+    if (split) options.log->add(sim.integrator().domain().describe());
     RunSummary summary;
     summary.particles = ref.size();
     const auto stop = [&](const State& s) {
-        if (const int signal = options.stopSignal ? options.stopSignal() : 0) {
-            summary.stopReason = signalName(signal);
+        const int signal = options.stopSignal ? options.stopSignal() : 0;
+        // A split run stops on every process after the same step.
+        if (split ? options.domain->any(signal != 0) : signal != 0) {
+            summary.stopReason = signal != 0 ? signalName(signal) : "a signal to another process";
             return true;
         }
         if (options.stopAfterSteps > 0 && s.step >= options.stopAfterSteps) {
@@ -626,6 +651,9 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
             out.snapshot(sim);
         }
     } catch (const NumericalError& e) {
+        // Split, the other processes are waiting in an exchange: no final snapshot (main ends
+        // them all).
+        if (split) throw;
         out.writeSnapshotOnly(sim.state());
         options.log->add(std::string("stopped: ") + e.what() + "; final state written");
         throw;
@@ -646,7 +674,17 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                                 summary.steps) +
                          summary.checkpoint.string());
     } else {
+        sim.gatherState();
         logEnd(*options.log, summary, sim.energy());
+        if (split) {
+            const PhaseTimes& t = sim.integrator().phaseTimes();
+            char line[200];
+            std::snprintf(line, sizeof line,
+                          "process 0: %.2f s of the steps exchanging ghosts' columns (of %.2f s "
+                          "in the steps)",
+                          t.exchange, t.kinematicsAndStress + t.forces + t.contact + t.other);
+            options.log->add(line);
+        }
         const BrittleBonds& bonds = sim.integrator().bonds();
         if (bonds.enabled()) {
             Index detached = 0, failed = 0;

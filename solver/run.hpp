@@ -14,10 +14,12 @@
 
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "case_config.hpp"
+#include "distributed/domain.hpp"
 #include "progress.hpp"
 #include "run_log.hpp"
 
@@ -38,6 +40,9 @@ struct RunOptions {
     /// A fresh run into a folder that holds an earlier run's files (snapshots, checkpoint,
     /// history): false refuses with InputError, true removes them first.
     bool overwrite = false;
+    /// A run split over processes (null or one process: serial). Every process runs runCase
+    /// alike; the one whose domain writesFiles() writes the run folder, the others only step.
+    std::shared_ptr<Domain> domain;
 };
 
 struct RunSummary {

@@ -21,8 +21,14 @@ class RunLog {
   public:
     /// Called before a line is printed (the progress bar erases itself).
     std::function<void()> beforePrint;
+    /// Keeps lines without printing them (the processes of a split run other than the first).
+    bool quiet = false;
 
     void add(const std::string& line) {
+        if (quiet) {
+            lines_.push_back(line);
+            return;
+        }
         if (beforePrint) beforePrint();
         std::printf("%s\n", line.c_str());
         std::fflush(stdout);

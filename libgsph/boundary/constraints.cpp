@@ -28,12 +28,13 @@ void applyConstraints(const std::vector<VelocityConstraint>& constraints, const 
 }
 
 double reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
-                     const State& state, const std::vector<Vec3>& force) {
+                     const State& state, const std::vector<Vec3>& force, ParticleRange owned) {
     double power = 0.0;
     const double eps = std::max(state.dt, 1e-12) * 1e-3;
     for (const VelocityConstraint& c : constraints) {
         if (!c.velocity) continue;  // fixed: no power
         for (Index a : c.particles) {
+            if (!owned.contains(a)) continue;
             const auto ia = static_cast<std::size_t>(a);
             const Vec3 accel =
                 (c.at(state.time + eps, ref.X[ia]) - c.at(state.time - eps, ref.X[ia])) / (2 * eps);

@@ -54,12 +54,13 @@ RigidWalls::RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vecto
 WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x,
                                  const std::vector<Vec3>& v, std::vector<Vec3>& force,
                                  std::vector<Vec3>& friction, std::vector<double>& frequency2,
-                                 std::vector<Vec3>& wallForce) {
+                                 std::vector<Vec3>& wallForce, ParticleRange owned) {
     WallResult result;
     if (walls_.empty()) return result;
     const Reference& ref = *ref_;
     const std::size_t walls = walls_.size();
-    parallelFor(ref.size(), [&](Index a) {
+    owned_ = owned;
+    parallelFor(owned, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         Vec3 total = Vec3::Zero(), tangential = Vec3::Zero();
         double u = 0.0, push = 0.0, w2 = 0.0;
@@ -118,7 +119,7 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
     });
     const auto sum = [&](const std::vector<double>& part) {
         return deterministicSum(
-            ref.size(), 0.0, [&](Index a) { return part[static_cast<std::size_t>(a)]; }, partial_);
+            owned, 0.0, [&](Index a) { return part[static_cast<std::size_t>(a)]; }, partial_);
     };
     result.energy = sum(energy_);
     result.pushPower = sum(pushPower_);
@@ -131,7 +132,7 @@ void RigidWalls::totalForces(std::vector<Vec3>& totals) const {
     if (walls == 0 || perWall_.empty()) return;
     for (std::size_t iw = 0; iw < walls; ++iw)
         totals[iw] = deterministicSum(
-            ref_->size(), Vec3(Vec3::Zero()),
+            owned_, Vec3(Vec3::Zero()),
             [&](Index a) -> Vec3 { return perWall_[static_cast<std::size_t>(a) * walls + iw]; },
             partialForce_);
 }

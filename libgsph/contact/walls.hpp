@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "contact/penalty_contact.hpp"
+#include "core/parallel.hpp"
 #include "core/types.hpp"
 #include "particles/reference.hpp"
 
@@ -77,14 +78,16 @@ class RigidWalls {
 
     /// Adds the walls' forces at time t (positions x, velocities v, step dt for the stick
     /// limit; dt ≤ 0: no limit) to force[a], the friction part also to friction[a], k_a for
-    /// each wall touched to frequency2[a]; wallForce[a] = the walls' total force on a.
+    /// each wall touched to frequency2[a]; wallForce[a] = the walls' total force on a; for the
+    /// `owned` particles (all of them in a serial run), and their sums only.
     WallResult addForces(double t, double dt, const std::vector<Vec3>& x,
                          const std::vector<Vec3>& v, std::vector<Vec3>& force,
                          std::vector<Vec3>& friction, std::vector<double>& frequency2,
-                         std::vector<Vec3>& wallForce);
+                         std::vector<Vec3>& wallForce, ParticleRange owned);
 
     /// Per wall, the total force (normal and friction) it exerted on the bodies at the last
-    /// addForces [N] (zero before the first); the reaction on the wall is its opposite. Summed
+    /// addForces [N] (zero before the first), on its owned particles; the reaction on the wall is
+    /// its opposite. Summed
     /// in a fixed order (bit-identical for any thread count); `totals` is resized to the walls.
     void totalForces(std::vector<Vec3>& totals) const;
 
@@ -97,6 +100,7 @@ class RigidWalls {
     std::vector<Vec3> perWall_;   ///< force of wall w on a: perWall_[a · walls + w]
     std::vector<double> energy_, pushPower_, partial_;  ///< per particle scratch
     mutable std::vector<Vec3> partialForce_;            ///< scratch of totalForces
+    ParticleRange owned_;                               ///< of the last addForces
 };
 
 }  // namespace gsph

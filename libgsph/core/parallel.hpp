@@ -6,6 +6,8 @@
 // - deterministicSum(n, term): Σ term(i) summed in fixed chunks and a fixed order, so the
 //   result is bit-identical for any thread count (an OpenMP reduction would not be). The
 //   overload with a `partial` scratch vector does not allocate once that has grown.
+// - ParticleRange: the particles this process advances (all of them in a serial run; one
+//   rank's share in a distributed one, distributed/domain.hpp); the loops above take it too.
 #pragma once
 
 #include <omp.h>
@@ -15,7 +17,16 @@
 #include <utility>
 #include <vector>
 
+#include "core/types.hpp"
+
 namespace gsph {
+
+/// The particles [begin, end) one process advances.
+struct ParticleRange {
+    Index begin = 0, end = 0;
+    Index size() const { return end - begin; }
+    bool contains(Index a) const { return a >= begin && a < end; }
+};
 
 /// Loops shorter than this run on the calling thread: a parallel region costs a few µs of
 /// fork/join, and on a loaded machine spinning threads make tiny regions far slower (measured:
@@ -53,6 +64,12 @@ inline void parallelForBlocks(const std::vector<std::ptrdiff_t>& cost, Body&& bo
     }
 }
 
+/// body(a) for the particles a of `range`.
+template <class Body>
+inline void parallelFor(ParticleRange range, Body&& body) {
+    parallelFor(range.size(), [&](std::ptrdiff_t i) { body(range.begin + static_cast<Index>(i)); });
+}
+
 /// Chunk size of deterministicSum; fixed so that the summation order never changes.
 inline constexpr std::ptrdiff_t kReductionChunk = 2048;
 
@@ -76,6 +93,15 @@ template <class T, class Term>
 inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term) {
     std::vector<T> partial;
     return deterministicSum(n, zero, std::forward<Term>(term), partial);
+}
+
+/// Σ term(a) over the particles of `range`, in deterministicSum's chunks counted from its
+/// begin (the whole range [0, n) sums exactly as deterministicSum(n, …)).
+template <class T, class Term>
+inline T deterministicSum(ParticleRange range, T zero, Term&& term, std::vector<T>& partial) {
+    return deterministicSum(
+        range.size(), zero,
+        [&](std::ptrdiff_t i) { return term(range.begin + static_cast<Index>(i)); }, partial);
 }
 
 /// Minimum of term(i) over [0, n); exact, so independent of the thread count.

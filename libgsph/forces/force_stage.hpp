@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "core/types.hpp"
 #include "particles/state.hpp"
 
@@ -31,6 +32,10 @@ struct ForceParts {
 };
 
 struct ForceChannels {
+    /// The particles whose entries this process's stages must write and sum (all of them in a
+    /// serial run; distributed/domain.hpp). A stage may write others' entries too: nothing reads
+    /// them.
+    ParticleRange owned;
     std::vector<Vec3> force;
     ForceParts parts;  ///< viscous, hourglass, cohesive
     std::vector<Vec3> external;

@@ -6,12 +6,13 @@
 namespace gsph {
 namespace {
 
-// Σ f_a·v_a over the particles (0 for a channel no stage uses).
-double powerOf(const std::vector<Vec3>& part, const State& state, std::vector<double>& partial) {
+// Σ f_a·v_a over the owned particles (0 for a channel no stage uses).
+double powerOf(const std::vector<Vec3>& part, ParticleRange owned, const State& state,
+               std::vector<double>& partial) {
     if (part.empty()) return 0.0;
     return deterministicSum(
-        static_cast<std::ptrdiff_t>(part.size()), 0.0,
-        [&](std::ptrdiff_t a) {
+        owned, 0.0,
+        [&](Index a) {
             return part[static_cast<std::size_t>(a)].dot(state.v[static_cast<std::size_t>(a)]);
         },
         partial);
@@ -23,13 +24,14 @@ LedgerPowers measurePowers(const Reference& ref, const State& state, const Force
                            double stagePower, const std::vector<VelocityConstraint>& constraints,
                            std::vector<double>& partialSums) {
     LedgerPowers p;
-    p.viscous = powerOf(channels.parts.viscous, state, partialSums);
-    p.hourglass = powerOf(channels.parts.hourglass, state, partialSums);
-    p.cohesive = powerOf(channels.parts.cohesive, state, partialSums);
-    p.boundary = reactionPower(constraints, ref, state, channels.force);
+    const ParticleRange owned = channels.owned;
+    p.viscous = powerOf(channels.parts.viscous, owned, state, partialSums);
+    p.hourglass = powerOf(channels.parts.hourglass, owned, state, partialSums);
+    p.cohesive = powerOf(channels.parts.cohesive, owned, state, partialSums);
+    p.boundary = reactionPower(constraints, ref, state, channels.force, owned);
     p.external = channels.external.empty()
                      ? stagePower
-                     : stagePower + powerOf(channels.external, state, partialSums);
+                     : stagePower + powerOf(channels.external, owned, state, partialSums);
     return p;
 }
 

@@ -22,7 +22,8 @@ struct LedgerPowers {
     double viscous = 0.0, hourglass = 0.0, boundary = 0.0, external = 0.0, cohesive = 0.0;  ///< [W]
 };
 
-/// The powers at the state's time and velocities. `stagePower`: Σ of the stages' reported
+/// The powers at the state's time and velocities, over channels.owned (this process's share of
+/// each; `stagePower` is its share too). `stagePower`: Σ of the stages' reported
 /// externalPower at the last force evaluation. Deterministic (fixed summation order).
 LedgerPowers measurePowers(const Reference& ref, const State& state, const ForceChannels& channels,
                            double stagePower, const std::vector<VelocityConstraint>& constraints,

@@ -282,16 +282,45 @@ void StressUpdate::throwOnFailure(const State& state) const {
     }
 }
 
-void StressUpdate::bookDissipation(State& state) {
+void StressUpdate::bookDissipation(State& state, ParticleRange owned, Domain& domain) {
+    // Per body (and the fracture energy last), this process's share, summed over the processes
+    // and then booked in body order: one process books exactly as the serial run did.
+    dissipated_.assign(bodies_.size() + 1, 0.0);
+    const auto ownedPart = [&](Index begin, Index end) {
+        const Index lo = std::max(begin, owned.begin);
+        return ParticleRange{lo, std::max(lo, std::min(end, owned.end))};
+    };
     if (bonds_.enabled())
-        state.ledger.fractureEnergy += deterministicSum(
-            ref_.size(), 0.0, [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; },
-            partialSums_);
-    for (const BodyRange& body : bodies_) {
-        if (!tracksHistory(*body.material)) continue;
-        state.ledger.damageDissipation += sumOverBody(
-            body, 0.0, [&](Index a) { return damageDissipation_[static_cast<std::size_t>(a)]; },
-            partialSums_);
+        dissipated_.back() = deterministicSum(
+            ownedPart(0, ref_.size()), 0.0,
+            [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; }, partialSums_);
+    for (std::size_t b = 0; b < bodies_.size(); ++b) {
+        if (!tracksHistory(*bodies_[b].material)) continue;
+        dissipated_[b] = deterministicSum(
+            ownedPart(bodies_[b].begin, bodies_[b].end), 0.0,
+            [&](Index a) { return damageDissipation_[static_cast<std::size_t>(a)]; }, partialSums_);
+    }
+    if (domain.processes() > 1) domain.sum(dissipated_);
+    if (bonds_.enabled()) state.ledger.fractureEnergy += dissipated_.back();
+    for (std::size_t b = 0; b < bodies_.size(); ++b)
+        if (tracksHistory(*bodies_[b].material)) state.ledger.damageDissipation += dissipated_[b];
+}
+
+void StressUpdate::restrictTo(ParticleRange owned) {
+    for (std::size_t b = 0; b < blocks_.size(); ++b) {
+        StencilBlocks& body = blocks_[b];
+        StencilBlocks kept;
+        kept.stencils = body.stencils;
+        kept.cost.push_back(0);
+        for (std::size_t k = 0; k < body.blocks.size(); ++k) {
+            const ParticleBlock& block = body.blocks[k];
+            if (block.begin < owned.begin || block.end > owned.end) continue;
+            kept.blocks.push_back(block);
+            kept.particles += block.size();
+            kept.cost.push_back(kept.cost.back() + body.cost[k + 1] - body.cost[k]);
+        }
+        body = std::move(kept);
+        staged_[b] = stageCsrPairs(ref_, body);
     }
 }
 

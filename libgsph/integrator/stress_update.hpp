@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "distributed/domain.hpp"
 #include "failure/brittle_bonds.hpp"
 #include "failure/nonlocal_damage.hpp"
 #include "forces/hourglass.hpp"
@@ -47,12 +48,19 @@ class StressUpdate {
     /// Throws NumericalError naming the first particle that inverted (J ≤ 0) or whose F or σ is
     /// not finite.
     void advance(State& state, double dt, bool atRest);
-    /// Adds this step's failure losses and fracture energy of detached particles to the
-    /// state's ledger, in a fixed order (the plastic work is booked per particle by advance).
-    void bookDissipation(State& state);
+    /// Adds this step's failure losses and fracture energy of detached particles of the
+    /// `owned` particles, summed over the domain's processes, to the state's ledger, in a fixed
+    /// order (the plastic work is booked per particle by advance).
+    void bookDissipation(State& state, ParticleRange owned, Domain& domain);
+    /// Keeps only the blocks of the `owned` particles (a range distributed/halo_plan.hpp cut at
+    /// block boundaries): advance() and the force loops then run on those alone.
+    void restrictTo(ParticleRange owned);
 
     const StressFactors& factors() const { return factors_; }
     const ParticleFields& fields() const { return fields_; }
+    /// For the exchange of the ghosts' columns (distributed/domain.hpp).
+    StressFactors& factors() { return factors_; }
+    ParticleFields& fields() { return fields_; }
     /// Per body: its stencil and CSR blocks.
     const std::vector<StencilBlocks>& blocks() const { return blocks_; }
     /// Per body, as blocks(): its CSR particles' pairs staged once (neighbors/staged_pairs.hpp).
@@ -81,6 +89,7 @@ class StressUpdate {
     /// bonds can break; written by the detaching step alone, zero before and after it).
     std::vector<double> fractureEnergy_;
     std::vector<double> partialSums_;  ///< scratch of deterministicSum
+    std::vector<double> dissipated_;   ///< scratch of bookDissipation: per body, then fracture
     /// Per body, the nonlocal average of its damage driver (empty for local damage), and per
     /// particle the averages of this step (sized only when a body's damage is nonlocal).
     std::vector<NonlocalAverage> nonlocal_;

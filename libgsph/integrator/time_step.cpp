@@ -12,7 +12,7 @@ namespace gsph {
 
 double stableTimeStep(const Reference& ref, const State& state, const TimeStepRule& rule,
                       const std::vector<double>& lengthScale, const std::vector<double>& soundSpeed,
-                      const std::vector<double>& frequency2) {
+                      const std::vector<double>& frequency2, ParticleRange owned, Domain& domain) {
     if (rule.fixedTimeStep > 0.0) return rule.fixedTimeStep;
     const auto ratioOf = [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
@@ -22,18 +22,22 @@ double stableTimeStep(const Reference& ref, const State& state, const TimeStepRu
         return 1.0 / std::sqrt(1.0 / (wave * wave) + 0.25 * frequency2[ia]);
     };
     // A NaN ratio (a NaN velocity or sound speed) counts as −1: min() would pass over it.
-    const double ratio =
-        parallelMin(ref.size(), std::numeric_limits<double>::infinity(), [&](Index a) {
-            const double r = ratioOf(a);
+    const double local =
+        parallelMin(owned.size(), std::numeric_limits<double>::infinity(), [&](std::ptrdiff_t i) {
+            const double r = ratioOf(owned.begin + static_cast<Index>(i));
             return std::isnan(r) ? -1.0 : r;
         });
+    const double ratio = domain.processes() > 1 ? domain.minimum(local) : local;
     const double dt = rule.cfl * ratio;
     const double floor = rule.minTimeStepRatio * state.initialDt;
     if (ratio > 0.0 && std::isfinite(ratio) && !(dt < floor)) return dt;
+    if (local != ratio)
+        throw NumericalError("time step collapsed on another process", -1, state.time);
     // Failure only: name the particle that limits Δt (the first NaN, or the smallest ratio).
-    Index worst = 0;
-    double worstRatio = ref.size() > 0 ? ratioOf(0) : 0.0;
-    for (Index a = 0; a < ref.size() && !std::isnan(worstRatio); ++a) {
+    // (On the process that owns it; the others stop at the next exchange.)
+    Index worst = owned.begin;
+    double worstRatio = owned.size() > 0 ? ratioOf(owned.begin) : 0.0;
+    for (Index a = owned.begin; a < owned.end && !std::isnan(worstRatio); ++a) {
         const double r = ratioOf(a);
         if (std::isnan(r) || r < worstRatio) {
             worst = a;

@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "distributed/domain.hpp"
 #include "particles/reference.hpp"
 #include "particles/state.hpp"
 
@@ -21,10 +22,12 @@ struct TimeStepRule {
     double minTimeStepRatio = 0.0;
 };
 
-/// The next Δt. `frequency2`: ω_a² per particle, or empty. Throws NumericalError naming the
-/// particle that limits Δt when it is not finite, ≤ 0 or below the rule's floor.
+/// The next Δt: the minimum over the `owned` particles, then over the domain's processes.
+/// `frequency2`: ω_a² per particle, or empty. Throws NumericalError naming the particle that
+/// limits Δt when it is not finite, ≤ 0 or below the rule's floor (on the process that owns
+/// it; the others throw without a particle).
 double stableTimeStep(const Reference& ref, const State& state, const TimeStepRule& rule,
                       const std::vector<double>& lengthScale, const std::vector<double>& soundSpeed,
-                      const std::vector<double>& frequency2);
+                      const std::vector<double>& frequency2, ParticleRange owned, Domain& domain);
 
 }  // namespace gsph

@@ -4,6 +4,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 
@@ -53,6 +54,23 @@ std::vector<std::uint8_t> softeningFlags(const Reference& ref, const SolverOptio
 
 TimeStepRule timeStepRule(const SolverOptions& o) {
     return {o.cfl, o.fixedTimeStep, o.minTimeStepRatio};
+}
+
+// What a run split over processes cannot do yet, or empty: each needs data beyond the ghosts
+// (bonds breaking across a cut, a current-configuration search, an average over a length).
+std::string notSplittable(const SolverOptions& o, const std::vector<BodyRange>& bodies) {
+    for (double s : o.bondStretch)
+        if (s > 0.0) return "bonds that break by stretch";
+    for (FailedBondRule r : o.failedBonds)
+        if (r != FailedBondRule::Keep) return "bonds that break by damage";
+    if (!o.precracks.empty()) return "initial cracks";
+    if (softensBonds(o)) return "softening bonds";
+    if (contactBetweenBodies(o.contact, bodies.size())) return "contact between bodies";
+    if (o.contact.selfContact) return "self-contact";
+    for (const BodyRange& body : bodies)
+        if (const JohnsonCookDamage* damage = damageModel(*body.material))
+            if (damage->nonlocal()) return "a nonlocal damage";
+    return {};
 }
 
 }  // namespace
@@ -110,6 +128,57 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     if (needs.cohesive) channels_.parts.cohesive.assign(n, Vec3::Zero());
     if (needs.external) channels_.external.assign(n, Vec3::Zero());
     if (needs.frequency2) channels_.frequency2.assign(n, 0.0);
+    owned_ = {0, ref.size()};
+    channels_.owned = owned_;
+}
+
+void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
+    if (domain->processes() > 1) {
+        const std::string what = notSplittable(options_, bodies_);
+        if (!what.empty())
+            throw InputError("this run has " + what + ", which a run on " +
+                             std::to_string(domain->processes()) +
+                             " processes cannot do yet: run it on one");
+    }
+    domain_ = std::move(domain);
+    owned_ = domain_->split(ref_, stress_.blocks());
+    channels_.owned = owned_;
+    stress_.restrictTo(owned_);
+}
+
+void VelocityVerlet::shareGhosts(GhostColumns which) {
+    if (domain_->processes() == 1) return;
+    ghostColumns_.clear();
+    const auto add = [&](auto& field) {
+        for (int c = 0; c < std::decay_t<decltype(field)>::kComponents; ++c)
+            ghostColumns_.push_back(field.component(c));
+    };
+    ParticleFields& fields = stress_.fields();
+    if (which == GhostColumns::Motion) {
+        add(fields.x);
+        add(fields.v);
+    } else {
+        StressFactors& f = stress_.factors();
+        add(f.K);
+        add(f.N);
+        add(fields.F);
+        for (std::vector<double>* column :
+             {&f.soundSpeed, &f.density, &f.viscositySwitch, &f.hourglassScale})
+            ghostColumns_.push_back(column->data());
+    }
+    const double t0 = omp_get_wtime();
+    domain_->shareGhosts(which, ghostColumns_);
+    times_.exchange += omp_get_wtime() - t0;
+}
+
+LedgerPowers VelocityVerlet::powersNow(const State& state) {
+    LedgerPowers p = measurePowers(ref_, state, channels_, stagePower_, constraints_, partialSums_);
+    if (domain_->processes() > 1) {
+        std::array<double, 5> v = {p.viscous, p.hourglass, p.boundary, p.external, p.cohesive};
+        domain_->sum(v);
+        p = {v[0], v[1], v[2], v[3], v[4]};
+    }
+    return p;
 }
 
 // Step 5: every stage adds its forces at x_{n+1}, t_{n+1} (v_{n+½}) in order; then a = f/m.
@@ -125,9 +194,18 @@ void VelocityVerlet::computeAccelerations(State& state) {
         stagePower_ += report.externalPower;
         (k == 0 ? times_.forces : times_.contact) += omp_get_wtime() - t0;
     }
-    state.ledger.contactEnergy = potential;
     for (const auto& stage : stages_) stage->record(state);
-    parallelFor(ref_.size(), [&](Index a) {
+    if (domain_->processes() > 1) {
+        std::array<double, 2> sums = {potential, stagePower_};
+        domain_->sum(sums);
+        potential = sums[0];
+        stagePower_ = sums[1];
+        // The walls' totals (history rows, checkpoint): this process's share until summed.
+        if (!state.wallForce.empty())
+            domain_->sum({state.wallForce.front().data(), 3 * state.wallForce.size()});
+    }
+    state.ledger.contactEnergy = potential;
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.acceleration[ia] = channels_.force[ia] / ref_.mass[ia];
     });
@@ -144,12 +222,12 @@ void VelocityVerlet::initialize(State& state) {
     applyConstraints(constraints_, ref_, state, state.time);
     parallelFor(ref_.size(), [&](Index a) { stress_.pack(state, a); });
     stress_.advance(state, 0.0, true);
+    shareGhosts(GhostColumns::ForceFactors);
     computeAccelerations(state);
     state.dt = stableTimeStep(ref_, state, timeStepRule(options_), stress_.lengthScale(),
-                              stress_.factors().soundSpeed, channels_.frequency2);
+                              stress_.factors().soundSpeed, channels_.frequency2, owned_, *domain_);
     state.initialDt = state.dt;
-    startLedger(state.ledger,
-                measurePowers(ref_, state, channels_, stagePower_, constraints_, partialSums_));
+    startLedger(state.ledger, powersNow(state));
     times_ = PhaseTimes{};  // phase times count the steps only
 }
 
@@ -164,41 +242,41 @@ void VelocityVerlet::resume(const State& state) {
 void VelocityVerlet::step(State& state) {
     const double t0 = omp_get_wtime();
     const double dt = state.dt;
-    const Index n = ref_.size();
     // 1–2: half kick, constraints at t_n + ½Δt, drift; bonds stretched too far break.
-    parallelFor(n, [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.v[ia] += 0.5 * dt * state.acceleration[ia];
     });
     applyConstraints(constraints_, ref_, state, state.time + 0.5 * dt);
-    parallelFor(n, [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.x[ia] += dt * state.v[ia];
         stress_.pack(state, a);
     });
+    shareGhosts(GhostColumns::Motion);
     state.ledger.fractureEnergy += bonds_.breakStretchedBonds(state).releasedEnergy;
     // 3–4: F, Ḟ, σ at t_{n+1} and their dissipation.
     state.time += dt;
     const double t1 = omp_get_wtime();
     stress_.advance(state, dt, false);
-    stress_.bookDissipation(state);
+    shareGhosts(GhostColumns::ForceFactors);
+    stress_.bookDissipation(state, owned_, *domain_);
     const double t2 = omp_get_wtime();
     // 5: the stages' forces (viscosity sees v_{n+½}).
     const double stagesBefore = times_.forces + times_.contact;
     computeAccelerations(state);
     const double t3 = omp_get_wtime();
     // 6: second half kick, constraints at t_{n+1}; the ledger's trapezoid over the step.
-    parallelFor(n, [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         state.v[ia] += 0.5 * dt * state.acceleration[ia];
     });
     applyConstraints(constraints_, ref_, state, state.time);
     ++state.step;
-    bookStep(state.ledger,
-             measurePowers(ref_, state, channels_, stagePower_, constraints_, partialSums_), dt);
+    bookStep(state.ledger, powersNow(state), dt);
     // 7: next step size.
     state.dt = stableTimeStep(ref_, state, timeStepRule(options_), stress_.lengthScale(),
-                              stress_.factors().soundSpeed, channels_.frequency2);
+                              stress_.factors().soundSpeed, channels_.frequency2, owned_, *domain_);
     const double t4 = omp_get_wtime();
     times_.kinematicsAndStress += t2 - t1;
     const double inStages = times_.forces + times_.contact - stagesBefore;

@@ -24,6 +24,9 @@
 // (the stress factors, SoA copies and force channels are rebuilt inside every step; the bonds'
 // G and detached flags derive from State::bondIntact): resume() continues a checkpointed
 // state bit for bit, provided the stages keep nothing across steps either.
+// Split over processes (setDomain, distributed/domain.hpp), each process runs these steps on its
+// own particles, with the neighbours' x, v shared after step 2 and their force factors after
+// step 4; Δt is the minimum over the processes and the ledger's powers their sum.
 #pragma once
 
 #include <memory>
@@ -33,10 +36,12 @@
 #include "boundary/constraints.hpp"
 #include "boundary/loads.hpp"
 #include "contact/contact_stages.hpp"
+#include "distributed/domain.hpp"
 #include "failure/brittle_bonds.hpp"
 #include "forces/force_stage.hpp"
 #include "forces/internal_force.hpp"
 #include "integrator/body_range.hpp"
+#include "integrator/power_ledger.hpp"
 #include "integrator/stress_update.hpp"
 #include "materials/material.hpp"
 #include "particles/reference.hpp"
@@ -84,6 +89,8 @@ struct PhaseTimes {
     double forces = 0.0;               ///< step 5: the internal force stage
     double contact = 0.0;              ///< step 5: the other stages (contact, walls, loads, …)
     double other = 0.0;                ///< kicks, drift, constraints, energy ledger, Δt
+    /// Of the above, waiting for the ghosts' columns of a split run (distributed/domain.hpp)
+    double exchange = 0.0;
 };
 
 class VelocityVerlet {
@@ -106,6 +113,15 @@ class VelocityVerlet {
     /// are (recomputing a_n would not give the same bits: the step's viscosity saw v_{n−½}).
     void resume(const State& state);
     void step(State& state);
+    /// Splits the run over the domain's processes (before initialize() or resume()): this
+    /// process then advances only its own particles. Throws InputError when the run uses what a
+    /// split run cannot do yet (bonds that break, contact between bodies or self-contact, a
+    /// nonlocal damage) on more than one process.
+    void setDomain(std::shared_ptr<Domain> domain);
+    const Domain& domain() const { return *domain_; }
+    Domain& domain() { return *domain_; }
+    /// The particles this process advances (all of them unless split).
+    ParticleRange owned() const { return owned_; }
 
     const SolverOptions& options() const { return options_; }
     const PhaseTimes& phaseTimes() const { return times_; }
@@ -124,6 +140,10 @@ class VelocityVerlet {
 
   private:
     void computeAccelerations(State& state);
+    /// The ghosts' columns of one exchange point (distributed/domain.hpp).
+    void shareGhosts(GhostColumns which);
+    /// The ledger's powers now, summed over the processes.
+    LedgerPowers powersNow(const State& state);
 
     const Reference& ref_;
     std::vector<BodyRange> bodies_;
@@ -136,6 +156,9 @@ class VelocityVerlet {
     double stagePower_ = 0.0;  ///< Σ of the stages' external power at the last evaluation [W]
     std::vector<double> partialSums_;
     PhaseTimes times_;
+    std::shared_ptr<Domain> domain_ = std::make_shared<Domain>();
+    ParticleRange owned_;
+    std::vector<double*> ghostColumns_;  ///< scratch of shareGhosts
 };
 
 }  // namespace gsph

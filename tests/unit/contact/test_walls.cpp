@@ -20,6 +20,10 @@ namespace {
 
 using testing::Box;
 
+ParticleRange all(const Reference& ref) {
+    return {0, ref.size()};
+}
+
 struct Block {
     Reference ref;
     ContactShapes shapes;
@@ -71,7 +75,7 @@ TEST(CylinderWall, ParticlePressedIntoACylinderFeelsTheAnalyticRadialForce) {
     x[0] = point + (radius + 0.5 * l - g0) * n0 + 0.7 * l * Vec3::UnitY();
     Forces f(n);
     const WallResult r = walls.addForces(0.0, 0.0, x, std::vector<Vec3>(n, Vec3::Zero()), f.force,
-                                         f.friction, f.frequency2, f.wallForce);
+                                         f.friction, f.frequency2, f.wallForce, all(b.ref));
     EXPECT_LT((f.force[0] - b.k[0] * g0 * n0).norm(), 1e-12 * b.k[0] * g0);
     int touching = 0;
     double energy = 0.0;
@@ -106,12 +110,13 @@ TEST(CylinderWall, ForceIsTheGradientOfTheSpringEnergyForAnisotropicCells) {
                      b.k, b.shapes);
     const std::vector<Vec3> v(n, Vec3::Zero());
     Forces f(n);
-    walls.addForces(0.0, 0.0, b.ref.X, v, f.force, f.friction, f.frequency2, f.wallForce);
+    walls.addForces(0.0, 0.0, b.ref.X, v, f.force, f.friction, f.frequency2, f.wallForce,
+                    all(b.ref));
     const auto energy = [&](const std::vector<Vec3>& x) {
         Forces scratch(n);
         return walls
             .addForces(0.0, 0.0, x, v, scratch.force, scratch.friction, scratch.frequency2,
-                       scratch.wallForce)
+                       scratch.wallForce, all(b.ref))
             .energy;
     };
     double worst = 0.0, largest = 0.0, turning = 0.0;
@@ -155,7 +160,8 @@ void expectPushPowerIsTheRateOfTheSpringEnergy(const Block& b, const Wall& w) {
     const std::vector<Vec3> v(n, Vec3::Zero());
     const auto at = [&](double t) {
         Forces f(n);
-        return walls.addForces(t, 0.0, b.ref.X, v, f.force, f.friction, f.frequency2, f.wallForce);
+        return walls.addForces(t, 0.0, b.ref.X, v, f.force, f.friction, f.frequency2, f.wallForce,
+                               all(b.ref));
     };
     const double t = 1e-5, step = 1e-10;
     const WallResult now = at(t);

@@ -35,6 +35,7 @@ TEST(PowerLedger, PowersFromTheChannelsAndTheReactions) {
     s.v[0] = Vec3(1.0, 0.0, 0.0);
     s.v[1] = Vec3(0.0, 2.0, 0.0);
     ForceChannels c;
+    c.owned = {0, ref.size()};
     c.force = {Vec3(3.0, 0.0, 0.0), Vec3(0.0, 5.0, 0.0)};
     c.parts.viscous = {Vec3(-1.0, 0.0, 0.0), Vec3(0.0, -0.5, 0.0)};
     c.external = {Vec3(0.0, 0.0, 0.0), Vec3(0.0, 7.0, 0.0)};

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// The split of a run over processes and the ghosts each one needs (distributed/domain.hpp).
+//
+// Split: contiguous particle ranges of about equal cost (StencilBlocks::cost, the measure the
+// threads already share the block loops by), cut only where no block straddles the cut, so every
+// block runs whole on one process as it does in the serial run: each cut is the first such place
+// at or past its share of the cost. A lattice's corner-column blocks run across up to kMaxBlock
+// rows, so small layouts have few such places and their shares can differ by many blocks. Particles
+// are numbered space by space, lattice row by row, so a range is a set of slabs of the bodies'
+// lattices. Ghosts: every particle another process owns that one of this process's particles reads
+// in a step: its pairs' neighbours (Reference::pairs) and the particles whose transposed
+// cross-space pairs it sums (Reference::crossOwner). Computed once, in the reference configuration,
+// by every process for every other (each holds the whole reference): no message is needed to agree
+// on who sends what.
+#pragma once
+
+#include <vector>
+
+#include "neighbors/stencil_blocks.hpp"
+#include "particles/reference.hpp"
+
+namespace gsph {
+
+/// cuts[r], cuts[r + 1]: the particles process r owns (size processes + 1, cuts[0] = 0, back()
+/// = the particle count). Throws InputError when the blocks allow fewer than `processes`
+/// non-empty ranges.
+std::vector<Index> cutByCost(const std::vector<StencilBlocks>& bodies, Index particles,
+                             int processes);
+
+/// The cost of each process's range (size processes).
+std::vector<std::ptrdiff_t> costsOf(const std::vector<StencilBlocks>& bodies,
+                                    const std::vector<Index>& cuts);
+
+/// What this process exchanges with one other: the particles it sends (its own, that the other
+/// reads) and those it receives (the other's, that it reads), both ascending.
+struct HaloPeer {
+    int process = 0;
+    std::vector<Index> send, receive;
+};
+
+/// The peers of `process` (those it exchanges anything with), ascending.
+std::vector<HaloPeer> planHalo(const Reference& ref, const std::vector<Index>& cuts, int process);
+
+}  // namespace gsph

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: MIT
+#include "distributed/mpi_domain.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <type_traits>
+
+#include "core/error.hpp"
+#include "distributed/halo_plan.hpp"
+
+namespace gsph {
+namespace {
+
+void check(int status, const char* call) {
+    if (status != MPI_SUCCESS) throw Error(std::string("MPI: ") + call + " failed");
+}
+
+class MpiDomain final : public Domain {
+  public:
+    MpiDomain() {
+        check(MPI_Comm_rank(MPI_COMM_WORLD, &rank_), "MPI_Comm_rank");
+        check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
+    }
+
+    ParticleRange split(const Reference& ref, const std::vector<StencilBlocks>& blocks) override {
+        cuts_ = cutByCost(blocks, ref.size(), size_);
+        peers_ = planHalo(ref, cuts_, rank_);
+        outgoing_.resize(peers_.size());
+        incoming_.resize(peers_.size());
+        requests_.resize(2 * peers_.size());
+        describeSplit(costsOf(blocks, cuts_));
+        const auto r = static_cast<std::size_t>(rank_);
+        return {cuts_[r], cuts_[r + 1]};
+    }
+    int processes() const override { return size_; }
+    bool writesFiles() const override { return rank_ == 0; }
+
+    void shareGhosts(GhostColumns which, std::span<double* const> columns) override {
+        const int tag = static_cast<int>(which);
+        for (std::size_t p = 0; p < peers_.size(); ++p) {
+            const HaloPeer& peer = peers_[p];
+            std::vector<double>& out = outgoing_[p];
+            out.resize(columns.size() * peer.send.size());
+            std::size_t i = 0;
+            for (double* column : columns)
+                for (Index a : peer.send) out[i++] = column[a];
+            incoming_[p].resize(columns.size() * peer.receive.size());
+            check(MPI_Irecv(incoming_[p].data(), static_cast<int>(incoming_[p].size()), MPI_DOUBLE,
+                            peer.process, tag, MPI_COMM_WORLD, &requests_[2 * p]),
+                  "MPI_Irecv");
+            check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, peer.process, tag,
+                            MPI_COMM_WORLD, &requests_[2 * p + 1]),
+                  "MPI_Isend");
+        }
+        check(
+            MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE),
+            "MPI_Waitall");
+        for (std::size_t p = 0; p < peers_.size(); ++p) {
+            std::size_t i = 0;
+            for (double* column : columns)
+                for (Index a : peers_[p].receive) column[a] = incoming_[p][i++];
+        }
+    }
+
+    double minimum(double local) override {
+        double global = local;
+        check(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
+              "MPI_Allreduce");
+        return global;
+    }
+
+    void sum(std::span<double> values) override {
+        const auto n = values.size();
+        partials_.resize(n * static_cast<std::size_t>(size_));
+        check(MPI_Allgather(values.data(), static_cast<int>(n), MPI_DOUBLE, partials_.data(),
+                            static_cast<int>(n), MPI_DOUBLE, MPI_COMM_WORLD),
+              "MPI_Allgather");
+        for (std::size_t k = 0; k < n; ++k) {
+            double total = 0.0;
+            for (std::size_t r = 0; r < static_cast<std::size_t>(size_); ++r)
+                total += partials_[r * n + k];
+            values[k] = total;
+        }
+    }
+
+    bool any(bool local) override {
+        int mine = local ? 1 : 0, some = 0;
+        check(MPI_Allreduce(&mine, &some, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
+        return some != 0;
+    }
+
+    void gather(State& state) override {
+        state.forEachArray([&](const Field& field, auto& array) {
+            if (field.extent != Extent::Particle || array.empty()) return;
+            using T = typename std::decay_t<decltype(array)>::value_type;
+            std::vector<int> counts(static_cast<std::size_t>(size_)),
+                offsets(static_cast<std::size_t>(size_));
+            for (std::size_t r = 0; r < counts.size(); ++r) {
+                counts[r] = static_cast<int>((cuts_[r + 1] - cuts_[r]) * sizeof(T));
+                offsets[r] = static_cast<int>(cuts_[r] * sizeof(T));
+            }
+            auto* data = reinterpret_cast<std::uint8_t*>(array.data());
+            const auto me = static_cast<std::size_t>(rank_);
+            if (rank_ == 0)
+                check(MPI_Gatherv(MPI_IN_PLACE, 0, MPI_BYTE, data, counts.data(), offsets.data(),
+                                  MPI_BYTE, 0, MPI_COMM_WORLD),
+                      "MPI_Gatherv");
+            else
+                check(MPI_Gatherv(data + offsets[me], counts[me], MPI_BYTE, nullptr, nullptr,
+                                  nullptr, MPI_BYTE, 0, MPI_COMM_WORLD),
+                      "MPI_Gatherv");
+        });
+    }
+
+    std::string describe() const override { return description_; }
+
+  private:
+    // Ghosts over all processes and the most on one, and the bytes a step exchanges: per ghost,
+    // x and v (6 doubles) and the force factors (K, N, F: 27, and c, ρ, α, s: 4).
+    void describeSplit(const std::vector<std::ptrdiff_t>& costs) {
+        long mine = 0;
+        for (const HaloPeer& peer : peers_) mine += static_cast<long>(peer.receive.size());
+        long total = 0, most = 0;
+        check(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+        check(MPI_Allreduce(&mine, &most, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+        std::string cuts;
+        for (std::size_t r = 1; r + 1 < cuts_.size(); ++r)
+            cuts += (r > 1 ? ", " : "") + std::to_string(cuts_[r]);
+        std::ptrdiff_t all = 0, largest = 0;
+        for (std::ptrdiff_t c : costs) {
+            all += c;
+            largest = std::max(largest, c);
+        }
+        char line[400];
+        std::snprintf(line, sizeof line,
+                      "split over %d processes at particles %s (the dearest process has %.3g of "
+                      "an equal share of the cost); %ld ghosts (at most %ld on one), %.1f kB "
+                      "exchanged per step",
+                      size_, cuts.c_str(),
+                      static_cast<double>(largest) * size_ /
+                          static_cast<double>(std::max<std::ptrdiff_t>(all, 1)),
+                      total, most, static_cast<double>(total) * 37 * 8 / 1e3);
+        description_ = line;
+    }
+
+    std::string description_;
+    int rank_ = 0, size_ = 1;
+    std::vector<Index> cuts_;
+    std::vector<HaloPeer> peers_;
+    std::vector<std::vector<double>> outgoing_, incoming_;
+    std::vector<MPI_Request> requests_;
+    std::vector<double> partials_;
+};
+
+}  // namespace
+
+std::shared_ptr<Domain> makeMpiDomain() {
+    return std::make_shared<MpiDomain>();
+}
+
+}  // namespace gsph
