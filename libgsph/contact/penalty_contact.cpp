@@ -49,6 +49,7 @@ PenaltyContact::PenaltyContact(const Reference& ref, std::vector<double> stiffne
                                ContactShapes shapes, const ContactOptions& options)
     : ref_(&ref), shapes_(std::move(shapes)), stiffness_(std::move(stiffness)) {
     const auto n = static_cast<std::size_t>(ref.size());
+    owned_ = {0, ref.size()};
     const bool severalBodies = n > 0 && std::any_of(ref.body.begin(), ref.body.end(),
                                                     [&](Index b) { return b != ref.body.front(); });
     betweenBodies_ = options.betweenBodies && severalBodies;
@@ -219,7 +220,7 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
     const ContactShapes& shape = shapes_;
     const int zReach = ref.dim.value == 2 ? 0 : 1;
     const std::size_t bodies = ranges_.size();
-    parallelFor(ref.size(), [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         energy_[ia] = 0.0;
         pairCount_[ia] = 0;
@@ -298,10 +299,11 @@ double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& 
         pairCount_[ia] = count;
     });
     long counted = 0;
-    for (std::int32_t c : pairCount_) counted += c;
+    for (Index a = owned_.begin; a < owned_.end; ++a)
+        counted += pairCount_[static_cast<std::size_t>(a)];
     pairs_ = counted / 2;
     return deterministicSum(
-        ref.size(), 0.0, [&](Index a) { return energy_[static_cast<std::size_t>(a)]; }, partial_);
+        owned_, 0.0, [&](Index a) { return energy_[static_cast<std::size_t>(a)]; }, partial_);
 }
 
 void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
@@ -312,7 +314,8 @@ void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
     const std::size_t bodies = ranges_.size();
     out.assign(bodies * bodies, Vec3::Zero());
     for (std::size_t i = 0; i < bodies; ++i)
-        for (Index a = ranges_[i].first; a < ranges_[i].second; ++a) {
+        for (Index a = std::max(ranges_[i].first, owned_.begin);
+             a < std::min(ranges_[i].second, owned_.end); ++a) {
             const auto ia = static_cast<std::size_t>(a);
             if (!candidate_[ia]) continue;
             for (std::size_t j = 0; j < bodies; ++j)

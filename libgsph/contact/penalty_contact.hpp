@@ -30,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/parallel.hpp"
 #include "core/types.hpp"
 #include "particles/reference.hpp"
 
@@ -71,6 +72,10 @@ class PenaltyContact {
                    const ContactOptions& options);
 
     bool active() const { return active_; }
+    /// The particles whose forces, energy and body totals addForces computes (all of them
+    /// unless set: a process of a split run, distributed/domain.hpp). The search still covers
+    /// every particle, so x must hold every particle's position.
+    void restrictTo(ParticleRange owned) { owned_ = owned; }
 
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
     /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J].
@@ -87,7 +92,8 @@ class PenaltyContact {
     void recordSeparations(const std::vector<Vec3>& x, const std::vector<std::uint8_t>& bondIntact,
                            std::vector<double>& separation) const;
 
-    /// Pairs in contact at the last addForces (a diagnostic; each pair counted once).
+    /// Pairs in contact at the last addForces (a diagnostic; each pair counted once; in a split
+    /// run, the pairs of this process's particles).
     long pairsInContact() const { return pairs_; }
 
     /// Bodies in contact with each other: the runs of equal Reference::body in particle order.
@@ -132,6 +138,7 @@ class PenaltyContact {
     std::vector<Vec3> forceByBody_;
     std::vector<double> partial_;  ///< scratch of deterministicSum
     long pairs_ = 0;
+    ParticleRange owned_;
 };
 
 }  // namespace gsph

@@ -7,10 +7,11 @@
 // arithmetic of the serial run, so each particle's bits do not depend on the process count.
 // Within a step a particle reads its neighbours twice: their x, v after the drift (for F, Ḟ)
 // and their force factors after the stress update (for the pair forces); shareGhosts brings
-// those columns of the neighbours another process owns (its ghosts). The global minimum of Δt is
-// exact; the sums of the energy ledger add the processes' partial sums, so they depend on the
-// split at round-off (the state does not read them). gather gives process 0 every particle's
-// state for the files it writes.
+// those columns of the neighbours another process owns (its ghosts). Contact between bodies
+// searches every particle's current position: shareAll gives each process all of them. The global
+// minimum of Δt is exact; the sums of the energy ledger add the processes' partial sums, so they
+// depend on the split at round-off (the state does not read them). gather gives process 0 every
+// particle's state for the files it writes.
 //
 // This base class is the serial run: one process owning every particle, nothing to exchange.
 #pragma once
@@ -51,6 +52,9 @@ class Domain {
         (void)which;
         (void)columns;
     }
+    /// Every process gets every process's entries of a per-particle array (collective): the
+    /// positions a search in the current configuration (contact between bodies) reads.
+    virtual void shareAll(std::vector<Vec3>& perParticle) { (void)perParticle; }
     /// The minimum over the processes (exact).
     virtual double minimum(double local) { return local; }
     /// Each value summed over the processes.

@@ -66,6 +66,14 @@ class MpiDomain final : public Domain {
         }
     }
 
+    void shareAll(std::vector<Vec3>& perParticle) override {
+        std::vector<int> counts, offsets;
+        byteRanges(sizeof(Vec3), counts, offsets);
+        check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), counts.data(),
+                             offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
+              "MPI_Allgatherv");
+    }
+
     double minimum(double local) override {
         double global = local;
         check(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
@@ -97,12 +105,8 @@ class MpiDomain final : public Domain {
         state.forEachArray([&](const Field& field, auto& array) {
             if (field.extent != Extent::Particle || array.empty()) return;
             using T = typename std::decay_t<decltype(array)>::value_type;
-            std::vector<int> counts(static_cast<std::size_t>(size_)),
-                offsets(static_cast<std::size_t>(size_));
-            for (std::size_t r = 0; r < counts.size(); ++r) {
-                counts[r] = static_cast<int>((cuts_[r + 1] - cuts_[r]) * sizeof(T));
-                offsets[r] = static_cast<int>(cuts_[r] * sizeof(T));
-            }
+            std::vector<int> counts, offsets;
+            byteRanges(sizeof(T), counts, offsets);
             auto* data = reinterpret_cast<std::uint8_t*>(array.data());
             const auto me = static_cast<std::size_t>(rank_);
             if (rank_ == 0)
@@ -119,6 +123,16 @@ class MpiDomain final : public Domain {
     std::string describe() const override { return description_; }
 
   private:
+    // Each process's range in bytes of an array of `size`-byte entries.
+    void byteRanges(std::size_t size, std::vector<int>& counts, std::vector<int>& offsets) const {
+        counts.resize(static_cast<std::size_t>(size_));
+        offsets.resize(counts.size());
+        for (std::size_t r = 0; r < counts.size(); ++r) {
+            counts[r] = static_cast<int>(static_cast<std::size_t>(cuts_[r + 1] - cuts_[r]) * size);
+            offsets[r] = static_cast<int>(static_cast<std::size_t>(cuts_[r]) * size);
+        }
+    }
+
     // Ghosts over all processes and the most on one, and the bytes a step exchanges: per ghost,
     // x and v (6 doubles) and the force factors (K, N, F: 27, and c, ρ, α, s: 4).
     void describeSplit(const std::vector<std::ptrdiff_t>& costs) {

@@ -65,7 +65,6 @@ std::string notSplittable(const SolverOptions& o, const std::vector<BodyRange>& 
         if (r != FailedBondRule::Keep) return "bonds that break by damage";
     if (!o.precracks.empty()) return "initial cracks";
     if (softensBonds(o)) return "softening bonds";
-    if (contactBetweenBodies(o.contact, bodies.size())) return "contact between bodies";
     if (o.contact.selfContact) return "self-contact";
     for (const BodyRange& body : bodies)
         if (const JohnsonCookDamage* damage = damageModel(*body.material))
@@ -144,6 +143,7 @@ void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
     owned_ = domain_->split(ref_, stress_.blocks());
     channels_.owned = owned_;
     stress_.restrictTo(owned_);
+    sharesAllPositions_ = domain_->processes() > 1 && stage<PairContactStage>() != nullptr;
 }
 
 void VelocityVerlet::shareGhosts(GhostColumns which) {
@@ -200,9 +200,10 @@ void VelocityVerlet::computeAccelerations(State& state) {
         domain_->sum(sums);
         potential = sums[0];
         stagePower_ = sums[1];
-        // The walls' totals (history rows, checkpoint): this process's share until summed.
-        if (!state.wallForce.empty())
-            domain_->sum({state.wallForce.front().data(), 3 * state.wallForce.size()});
+        // The walls' and the contact's totals (history rows, checkpoint): this process's share
+        // until summed.
+        for (std::vector<Vec3>* totals : {&state.wallForce, &state.contactForce})
+            if (!totals->empty()) domain_->sum({totals->front().data(), 3 * totals->size()});
     }
     state.ledger.contactEnergy = potential;
     parallelFor(owned_, [&](Index a) {
@@ -254,6 +255,7 @@ void VelocityVerlet::step(State& state) {
         stress_.pack(state, a);
     });
     shareGhosts(GhostColumns::Motion);
+    if (sharesAllPositions_) domain_->shareAll(state.x);
     state.ledger.fractureEnergy += bonds_.breakStretchedBonds(state).releasedEnergy;
     // 3–4: F, Ḟ, σ at t_{n+1} and their dissipation.
     state.time += dt;

@@ -25,8 +25,9 @@
 // G and detached flags derive from State::bondIntact): resume() continues a checkpointed
 // state bit for bit, provided the stages keep nothing across steps either.
 // Split over processes (setDomain, distributed/domain.hpp), each process runs these steps on its
-// own particles, with the neighbours' x, v shared after step 2 and their force factors after
-// step 4; Δt is the minimum over the processes and the ledger's powers their sum.
+// own particles, with the neighbours' x, v shared after step 2 (every particle's x with contact
+// between bodies) and their force factors after step 4; Δt is the minimum over the processes
+// and the ledger's powers their sum.
 #pragma once
 
 #include <memory>
@@ -115,8 +116,8 @@ class VelocityVerlet {
     void step(State& state);
     /// Splits the run over the domain's processes (before initialize() or resume()): this
     /// process then advances only its own particles. Throws InputError when the run uses what a
-    /// split run cannot do yet (bonds that break, contact between bodies or self-contact, a
-    /// nonlocal damage) on more than one process.
+    /// split run cannot do yet (bonds that break, self-contact, a nonlocal damage) on more than
+    /// one process.
     void setDomain(std::shared_ptr<Domain> domain);
     const Domain& domain() const { return *domain_; }
     Domain& domain() { return *domain_; }
@@ -159,6 +160,8 @@ class VelocityVerlet {
     std::shared_ptr<Domain> domain_ = std::make_shared<Domain>();
     ParticleRange owned_;
     std::vector<double*> ghostColumns_;  ///< scratch of shareGhosts
+    /// Split with contact between bodies: every process gets every position after the drift.
+    bool sharesAllPositions_ = false;
 };
 
 }  // namespace gsph

@@ -15,6 +15,8 @@ below). Asserts
     and the ledger's within 1e-12 of their column's largest magnitude;
   - restarts across process counts: stopped on 4 processes and continued on 2, stopped on 3
     and continued on 1: the final snapshot byte for byte the straight run's;
+  - contact between bodies: the plate-and-projectile sample on 3 processes, its final snapshot
+    byte for byte and its history (contact forces included) within 1e-12 of the serial run's;
   - a run a split cannot do yet (Kalthoff-Winkler: bonds that break) is refused on 2
     processes with exit code 1 and the message saying so.
 Exit status 0 when all hold, 1 otherwise.
@@ -151,6 +153,33 @@ def main():
                    for x in compare_files(os.path.join(serial, snapshots[-1]),
                                           os.path.join(folder, snapshots[-1]))]
         print(f"stopped on {first} processes after step {stop}, continued on {then}: compared")
+    # Contact between bodies (a search in the current configuration over every particle): the
+    # plate-and-projectile sample (two bodies, a clamped rim, a wall with friction, gravity).
+    plate = os.path.join(a.source, "cases/plate_projectile/case.toml")
+    plate_particles = os.path.join(a.out, "plate_projectile.h5")
+    run([a.preproc, os.path.join(a.source, "geometries/plate_projectile.geo"), "-o",
+         plate_particles], os.path.join(a.out, "plate_projectile.preproc.log"))
+    plate_run = ["--particles", plate_particles, "--overwrite"]
+    plate_serial = os.path.join(a.out, "plate_serial")
+    with open(plate_serial + ".log", "w") as out:
+        if subprocess.call([a.serial_solve, plate, "-o", plate_serial] + plate_run, stdout=out,
+                           stderr=subprocess.STDOUT, env=env) != 0:
+            sys.exit("split_runs: the serial plate run failed: " + plate_serial + ".log")
+    plate_split = os.path.join(a.out, "plate_np3")
+    if run(mpirun(3, [a.mpi_solve, plate, "-o", plate_split] + plate_run),
+           plate_split + ".log") != 0:
+        faults.append(f"plate and projectile on 3 processes: the run failed ({plate_split}.log)")
+    else:
+        names, rows = history(os.path.join(plate_serial, "history.csv"))
+        if not np.max(np.abs(rows[:, names.index("contact_plate_projectile_fz")])) > 0.0:
+            faults.append("plate and projectile: the bodies never touched")
+        last = sorted(f for f in os.listdir(plate_serial) if f.startswith("snapshot_"))[-1]
+        faults += [f"plate and projectile on 3 processes, {last}: {x}"
+                   for x in compare_files(os.path.join(plate_serial, last),
+                                          os.path.join(plate_split, last))]
+        faults += compare_history(os.path.join(plate_serial, "history.csv"),
+                                  os.path.join(plate_split, "history.csv"))
+        print(f"plate and projectile on 3 processes: {last} compared")
     # What a split run cannot do yet is refused, with one line and exit code 1.
     kw = os.path.join(a.out, "kalthoff_winkler.h5")
     run([a.preproc, os.path.join(a.source, "geometries/kalthoff_winkler.geo"), "--set",
