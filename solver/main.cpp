@@ -29,6 +29,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -88,10 +89,18 @@ struct Processes {
         std::_Exit(status);
     }
 #else
-    Processes(int&, char**&) {}
+    // Started by mpirun all the same: every process would run the whole case into one folder.
+    Processes(int&, char**&) {
+        for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE"})
+            if (const char* value = std::getenv(name))
+                launched = std::max(launched, std::atoi(value));
+        for (const char* name : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+            if (const char* value = std::getenv(name)) rank = std::atoi(value);
+    }
     [[noreturn]] void abort(int status) const {
         std::_Exit(status);
     }
+    int launched = 1;  ///< processes mpirun started (this build runs alone)
 #endif
     Processes(const Processes&) = delete;
     Processes& operator=(const Processes&) = delete;
@@ -142,6 +151,18 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         return app.exit(e) == 0 ? 0 : 1;  // --help, --version: 0; a bad option: 1
     }
+#ifndef GSPH_MPI
+    if (processes.launched > 1) {
+        if (processes.rank == 0)
+            std::fprintf(stderr,
+                         "gsph-solve: error: started as one of %d processes (mpirun), but this "
+                         "gsph-solve was built without MPI: each would run the whole case into "
+                         "the same folder; run it alone, or build with -DGSPH_MPI=ON "
+                         "(docs/mpi.md)\n",
+                         processes.launched);
+        return kExitError;
+    }
+#endif
     if (threads > 0) omp_set_num_threads(threads);
     if (materialPoint.requested()) return gsph::solver::runMaterialPoint(materialPoint, runDir);
 

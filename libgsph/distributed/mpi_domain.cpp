@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <limits>
 #include <string>
 #include <type_traits>
 
@@ -123,10 +124,16 @@ class MpiDomain final : public Domain {
     std::string describe() const override { return description_; }
 
   private:
-    // Each process's range in bytes of an array of `size`-byte entries.
+    // Each process's range in bytes of an array of `size`-byte entries (MPI counts are ints).
     void byteRanges(std::size_t size, std::vector<int>& counts, std::vector<int>& offsets) const {
         counts.resize(static_cast<std::size_t>(size_));
         offsets.resize(counts.size());
+        if (static_cast<std::size_t>(cuts_.back()) * size >
+            static_cast<std::size_t>(std::numeric_limits<int>::max()))
+            throw InputError(
+                "a split run gathers whole state arrays on one process, at most 2 GB "
+                "each: " +
+                std::to_string(cuts_.back()) + " particles are too many");
         for (std::size_t r = 0; r < counts.size(); ++r) {
             counts[r] = static_cast<int>(static_cast<std::size_t>(cuts_[r + 1] - cuts_[r]) * size);
             offsets[r] = static_cast<int>(static_cast<std::size_t>(cuts_[r]) * size);

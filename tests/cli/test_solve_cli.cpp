@@ -153,6 +153,25 @@ TEST(SolveCli, EveryBadCaseFileGetsItsOwnClearMessage) {
     }
 }
 
+// The serial build started by mpirun would run the whole case once per process into one
+// folder: it refuses, once, before writing anything (docs/mpi.md).
+#ifndef GSPH_MPI
+TEST(SolveCli, ASerialBuildStartedByMpirunRefusesToRun) {
+    TempDir dir;
+    makeParticles(dir);
+    const fs::path run = dir / "run";
+    const auto r = runCommand("mpirun --allow-run-as-root --oversubscribe -np 2 " + kSolve + " " +
+                              (kSource / "cases/graded_bar/case.toml").string() + " --particles " +
+                              (dir / "particles.h5").string() + " -o " + run.string());
+    EXPECT_NE(r.status, 0);
+    const std::string said = "this gsph-solve was built without MPI";
+    const auto first = r.err.find(said);
+    ASSERT_NE(first, std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find(said, first + 1), std::string::npos) << "said once: " << r.err;
+    EXPECT_FALSE(fs::exists(run)) << "nothing written";
+}
+#endif
+
 TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     TempDir dir;
     makeParticles(dir);
