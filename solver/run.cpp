@@ -199,6 +199,11 @@ std::vector<std::string> bodyNamesOf(const ParticleFile& file, const Simulation&
     return names;
 }
 
+// Whether this process writes the run folder (a serial run, or process 0 of a split one).
+bool writesFiles(const RunOptions& options) {
+    return !options.domain || options.domain->writesFiles();
+}
+
 std::vector<Wall> wallsOf(const CaseConfig& c) {
     std::vector<Wall> walls;
     for (const WallSpec& w : c.walls) walls.push_back(wallOf(w));
@@ -215,7 +220,7 @@ class RunOutputs {
         : c_(c),
           options_(options),
           sim_(sim),
-          writes_(!options.domain || options.domain->writesFiles()),
+          writes_(writesFiles(options)),
           log_(*options.log),
           ref_(sim.reference()),
           inputs_(std::move(inputs)),
@@ -377,20 +382,20 @@ class RunOutputs {
         return k;
     }
 
-  private:
-    /// A row of history.csv and of probes.csv.
-    void addRow(const Simulation& sim) {
-        gather();
-        history_.add(sim.state(), sim.energy(), sim.wallForces(), sim.contactForces());
-        if (!probes_.empty()) probes_.add(ref_, sim.state());
-    }
-
     /// A split run's state is whole on the writing process only after a gather (collective:
     /// every process calls it at the same points, once per step at most).
     void gather() {
         if (gatheredStep_ == sim_.state().step) return;
         sim_.gatherState();
         gatheredStep_ = sim_.state().step;
+    }
+
+  private:
+    /// A row of history.csv and of probes.csv.
+    void addRow(const Simulation& sim) {
+        gather();
+        history_.add(sim.state(), sim.energy(), sim.wallForces(), sim.contactForces());
+        if (!probes_.empty()) probes_.add(ref_, sim.state());
     }
 
     const CaseConfig& c_;
@@ -558,7 +563,7 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                              earlier.front().filename().string() +
                              "); give another -o, continue it with --restart, or pass "
                              "--overwrite to replace it");
-        if (!options.domain || options.domain->writesFiles())
+        if (writesFiles(options))
             for (const std::filesystem::path& p : earlier) std::filesystem::remove(p);
     }
     BodySetup bodies = matchBodies(c, file);
@@ -567,7 +572,7 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
     const Reference& ref = sim.reference();
     const bool split = options.domain && options.domain->processes() > 1;
     if (split) sim.setDomain(options.domain);
-    const bool writes = !options.domain || options.domain->writesFiles();
+    const bool writes = writesFiles(options);
     if (writes) std::filesystem::create_directories(options.runDir);
     if (const int stale = writes ? removeStaleTemporaries(options.runDir) : 0)
         options.log->add("removed " + std::to_string(stale) +
@@ -674,7 +679,7 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                                 summary.steps) +
                          summary.checkpoint.string());
     } else {
-        sim.gatherState();
+        out.gather();  // the energies below read every particle
         logEnd(*options.log, summary, sim.energy());
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();
