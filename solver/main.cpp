@@ -196,9 +196,12 @@ int main(int argc, char** argv) {
                          : caseName.empty() || caseName == "."
                              ? std::filesystem::path("run") / config.caseFile.stem()
                              : std::filesystem::path("run") / caseName;
-        options.progress = !writes                      ? gsph::solver::ProgressBar::Mode::Off
-                           : isatty(STDOUT_FILENO) != 0 ? gsph::solver::ProgressBar::Mode::Bar
-                                                        : gsph::solver::ProgressBar::Mode::Lines;
+        // Under mpirun stdout is mpirun's pseudo-terminal even when its output goes to a file:
+        // a split run prints plain lines.
+        const bool terminal = isatty(STDOUT_FILENO) != 0 && processes.count == 1;
+        options.progress = !writes    ? gsph::solver::ProgressBar::Mode::Off
+                           : terminal ? gsph::solver::ProgressBar::Mode::Bar
+                                      : gsph::solver::ProgressBar::Mode::Lines;
         if (writes) log.open(options.runDir / "run.log", !restart.empty());
         log.add(
             "gsph-solve " + std::string(gsph::kVersion) + ": " + casePath + " -> " +
