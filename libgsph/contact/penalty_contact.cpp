@@ -313,14 +313,15 @@ void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
     }
     const std::size_t bodies = ranges_.size();
     out.assign(bodies * bodies, Vec3::Zero());
-    for (std::size_t i = 0; i < bodies; ++i)
-        for (Index a = std::max(ranges_[i].first, owned_.begin);
-             a < std::min(ranges_[i].second, owned_.end); ++a) {
+    for (std::size_t i = 0; i < bodies; ++i) {
+        const ParticleRange mine = owned_.within(ranges_[i].first, ranges_[i].second);
+        for (Index a = mine.begin; a < mine.end; ++a) {
             const auto ia = static_cast<std::size_t>(a);
             if (!candidate_[ia]) continue;
             for (std::size_t j = 0; j < bodies; ++j)
                 out[i * bodies + j] += forceByBody_[ia * bodies + j];
         }
+    }
 }
 
 }  // namespace gsph

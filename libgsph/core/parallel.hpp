@@ -26,6 +26,12 @@ struct ParticleRange {
     Index begin = 0, end = 0;
     Index size() const { return end - begin; }
     bool contains(Index a) const { return a >= begin && a < end; }
+    /// The particles of [first, last) in this range (empty, at its place, when none are).
+    ParticleRange within(Index first, Index last) const {
+        const Index lo = first > begin ? first : begin;
+        const Index hi = last < end ? last : end;
+        return {lo, hi > lo ? hi : lo};
+    }
 };
 
 /// Loops shorter than this run on the calling thread: a parallel region costs a few µs of
@@ -111,6 +117,13 @@ inline double parallelMin(std::ptrdiff_t n, double init, Term&& term) {
 #pragma omp parallel for schedule(static) reduction(min : m) if (n >= kParallelThreshold)
     for (std::ptrdiff_t i = 0; i < n; ++i) m = std::min(m, term(i));
     return m;
+}
+
+/// Minimum of term(a) over the particles of `range`; exact.
+template <class Term>
+inline double parallelMin(ParticleRange range, double init, Term&& term) {
+    return parallelMin(range.size(), init,
+                       [&](std::ptrdiff_t i) { return term(range.begin + static_cast<Index>(i)); });
 }
 
 }  // namespace gsph

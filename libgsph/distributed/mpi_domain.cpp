@@ -33,6 +33,7 @@ class MpiDomain final : public Domain {
         outgoing_.resize(peers_.size());
         incoming_.resize(peers_.size());
         requests_.resize(2 * peers_.size());
+        byteRanges(sizeof(Vec3), positionCounts_, positionOffsets_);  // shareAll, every step
         describeSplit(costsOf(blocks, cuts_));
         const auto r = static_cast<std::size_t>(rank_);
         return {cuts_[r], cuts_[r + 1]};
@@ -68,10 +69,8 @@ class MpiDomain final : public Domain {
     }
 
     void shareAll(std::vector<Vec3>& perParticle) override {
-        std::vector<int> counts, offsets;
-        byteRanges(sizeof(Vec3), counts, offsets);
-        check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), counts.data(),
-                             offsets.data(), MPI_BYTE, MPI_COMM_WORLD),
+        check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), positionCounts_.data(),
+                             positionOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
               "MPI_Allgatherv");
     }
 
@@ -169,6 +168,7 @@ class MpiDomain final : public Domain {
     }
 
     std::string description_;
+    std::vector<int> positionCounts_, positionOffsets_;  ///< byteRanges of a Vec3 array
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
     std::vector<HaloPeer> peers_;

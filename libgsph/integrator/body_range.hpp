@@ -19,8 +19,8 @@ struct BodyRange {
 /// order; `partial` is its scratch.
 template <class T, class Term>
 T sumOverBody(const BodyRange& body, T zero, Term&& term, std::vector<T>& partial) {
-    return deterministicSum(
-        body.end - body.begin, zero, [&](Index i) { return term(body.begin + i); }, partial);
+    return deterministicSum(ParticleRange{body.begin, body.end}, zero, std::forward<Term>(term),
+                            partial);
 }
 
 }  // namespace gsph

@@ -286,18 +286,14 @@ void StressUpdate::bookDissipation(State& state, ParticleRange owned, Domain& do
     // Per body (and the fracture energy last), this process's share, summed over the processes
     // and then booked in body order: one process books exactly as the serial run did.
     dissipated_.assign(bodies_.size() + 1, 0.0);
-    const auto ownedPart = [&](Index begin, Index end) {
-        const Index lo = std::max(begin, owned.begin);
-        return ParticleRange{lo, std::max(lo, std::min(end, owned.end))};
-    };
     if (bonds_.enabled())
         dissipated_.back() = deterministicSum(
-            ownedPart(0, ref_.size()), 0.0,
-            [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; }, partialSums_);
+            owned, 0.0, [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; },
+            partialSums_);
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         if (!tracksHistory(*bodies_[b].material)) continue;
         dissipated_[b] = deterministicSum(
-            ownedPart(bodies_[b].begin, bodies_[b].end), 0.0,
+            owned.within(bodies_[b].begin, bodies_[b].end), 0.0,
             [&](Index a) { return damageDissipation_[static_cast<std::size_t>(a)]; }, partialSums_);
     }
     if (domain.processes() > 1) domain.sum(dissipated_);

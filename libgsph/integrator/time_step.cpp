@@ -22,11 +22,10 @@ double stableTimeStep(const Reference& ref, const State& state, const TimeStepRu
         return 1.0 / std::sqrt(1.0 / (wave * wave) + 0.25 * frequency2[ia]);
     };
     // A NaN ratio (a NaN velocity or sound speed) counts as −1: min() would pass over it.
-    const double local =
-        parallelMin(owned.size(), std::numeric_limits<double>::infinity(), [&](std::ptrdiff_t i) {
-            const double r = ratioOf(owned.begin + static_cast<Index>(i));
-            return std::isnan(r) ? -1.0 : r;
-        });
+    const double local = parallelMin(owned, std::numeric_limits<double>::infinity(), [&](Index a) {
+        const double r = ratioOf(a);
+        return std::isnan(r) ? -1.0 : r;
+    });
     const double ratio = domain.processes() > 1 ? domain.minimum(local) : local;
     const double dt = rule.cfl * ratio;
     const double floor = rule.minTimeStepRatio * state.initialDt;
