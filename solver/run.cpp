@@ -692,11 +692,16 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         }
         const BrittleBonds& bonds = sim.integrator().bonds();
         if (bonds.enabled()) {
-            Index detached = 0, failed = 0;
-            for (Index a = 0; a < sim.reference().size(); ++a) {
-                if (bonds.detached(a)) ++detached;
+            // Each process knows its own particles' detachment; the damage is gathered.
+            const ParticleRange owned = sim.integrator().owned();
+            double detachedHere = 0.0;  // exact: far below 2^53
+            for (Index a = owned.begin; a < owned.end; ++a)
+                if (bonds.detached(a)) detachedHere += 1.0;
+            if (split) options.domain->sum({&detachedHere, 1});
+            const auto detached = static_cast<Index>(detachedHere);
+            Index failed = 0;
+            for (Index a = 0; a < sim.reference().size(); ++a)
                 if (sim.state().damage[static_cast<std::size_t>(a)] >= 1.0) ++failed;
-            }
             // The initial cracks' share, from the reference alone (also after a restart).
             Index initial = 0;
             if (!sim.integrator().options().precracks.empty()) {

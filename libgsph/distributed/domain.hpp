@@ -5,9 +5,12 @@
 // particle index, and advances only its own particles, a contiguous range cut at stencil-block
 // boundaries (distributed/halo_plan.hpp): its blocks keep the paths (stencil or CSR) and the
 // arithmetic of the serial run, so each particle's bits do not depend on the process count.
-// Within a step a particle reads its neighbours twice: their x, v after the drift (for F, Ḟ)
-// and their force factors after the stress update (for the pair forces); shareGhosts brings
-// those columns of the neighbours another process owns (its ghosts). Contact between bodies
+// Within a step a particle reads its neighbours twice: their x, v after the drift (for F, Ḟ,
+// and the bonds' stretch) and their force factors after the stress update (for the pair forces;
+// with bonds that break, also their damage and stress); shareGhosts brings those entries of the
+// neighbours another process owns (its ghosts). Bonds break where their particle is owned; each
+// process then takes its ghosts' rows of the bond flags from their owners (shareGhostRows), so
+// every particle it reads sees its surviving bonds as the serial run does. Contact between bodies
 // searches every particle's current position: shareAll gives each process all of them. The global
 // minimum of Δt is exact; the sums of the energy ledger add the processes' partial sums, so they
 // depend on the split at round-off (the state does not read them). gather gives process 0 every
@@ -16,6 +19,8 @@
 // This base class is the serial run: one process owning every particle, nothing to exchange.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -27,16 +32,32 @@
 
 namespace gsph {
 
-/// The two points of a step where neighbours' columns are read (tags of the exchanges).
-enum class GhostColumns { Motion = 1, ForceFactors = 2 };
+/// The points of a step where neighbours' entries are read (tags of the exchanges).
+enum class GhostColumns { Motion = 1, ForceFactors = 2, BondRows = 3 };
+
+/// A per-particle array whose ghosts' entries an exchange overwrites: entry a occupies
+/// `entryBytes` bytes at data + a·entryBytes (a column of doubles, or an array of Vec3, Mat3).
+struct GhostArray {
+    void* data = nullptr;
+    std::size_t entryBytes = 0;
+};
+
+template <class T>
+GhostArray ghostArray(T* entries) {
+    return {entries, sizeof(T)};
+}
 
 class Domain {
   public:
     virtual ~Domain() = default;
     /// Called once, before the first step, with each body's blocks (in body order): splits the
-    /// particles and returns this process's range.
-    virtual ParticleRange split(const Reference& ref, const std::vector<StencilBlocks>& blocks) {
+    /// particles and returns this process's range. `cutStrided`: a cut may split a strided
+    /// block (distributed/halo_plan.hpp); not when bonds can break, since a block with a broken
+    /// bond takes the CSR path as a whole, and its parts would each choose for themselves.
+    virtual ParticleRange split(const Reference& ref, const std::vector<StencilBlocks>& blocks,
+                                bool cutStrided) {
         (void)blocks;
+        (void)cutStrided;
         return {0, ref.size()};
     }
     /// Number of processes.
@@ -45,13 +66,17 @@ class Domain {
     virtual std::string describe() const { return {}; }
     /// Whether this process writes the run's files (process 0).
     virtual bool writesFiles() const { return true; }
-    /// Overwrites this process's ghosts' entries of every column (one double per particle,
-    /// indexed by particle) with their owners' values; `columns` in the same order on every
-    /// process.
-    virtual void shareGhosts(GhostColumns which, std::span<double* const> columns) {
+    /// Overwrites this process's ghosts' entries of every array with their owners' values;
+    /// `arrays` in the same order on every process.
+    virtual void shareGhosts(GhostColumns which, std::span<const GhostArray> arrays) {
         (void)which;
-        (void)columns;
+        (void)arrays;
     }
+    /// This process's ghosts, ascending (after split(); empty when serial).
+    virtual std::span<const Index> ghosts() const { return {}; }
+    /// Overwrites this process's ghosts' rows of a per-pair array (one byte per entry of
+    /// ref.pairs, the CSR order of split()'s reference) with their owners' (collective).
+    virtual void shareGhostRows(std::span<std::uint8_t> perPair) { (void)perPair; }
     /// Every process gets every process's entries of a per-particle array (collective): the
     /// positions a search in the current configuration (contact between bodies) reads.
     virtual void shareAll(std::vector<Vec3>& perParticle) { (void)perParticle; }
@@ -61,8 +86,8 @@ class Domain {
     virtual void sum(std::span<double> values) { (void)values; }
     /// True when it is true on some process.
     virtual bool any(bool local) { return local; }
-    /// Process 0's state gets every process's particles (per-particle arrays; the scalars are
-    /// the same everywhere).
+    /// Process 0's state gets every process's particles (per-particle arrays, and the per-pair
+    /// arrays by the rows of each process's particles; the scalars are the same everywhere).
     virtual void gather(State& state) { (void)state; }
 };
 

@@ -9,11 +9,6 @@
 namespace gsph {
 namespace {
 
-struct Span {
-    Index begin, end;
-    std::ptrdiff_t cost;
-};
-
 // The particles outside [lo, hi) that the particles of [lo, hi) read, ascending.
 std::vector<Index> readsOutside(const Reference& ref, Index lo, Index hi) {
     const PairList& P = ref.pairs;
@@ -42,42 +37,64 @@ std::vector<Index> within(const std::vector<Index>& sorted, Index lo, Index hi) 
 }  // namespace
 
 std::vector<Index> cutByCost(const std::vector<StencilBlocks>& bodies, Index particles,
-                             int processes) {
+                             int processes, bool cutStrided) {
     if (processes < 1) throw InputError("a run needs at least one process");
-    std::vector<Span> spans;
+    const auto n = static_cast<std::size_t>(particles);
+    // costBefore[c]: the cost of the particles below c; forbidden[c] > 0 where a cut at c would
+    // split a block of consecutive particles, or leave a strided block a part shorter than a
+    // strip (kMinStencilRun): a difference array over c.
+    std::vector<std::ptrdiff_t> costBefore(n + 1, 0);
+    std::vector<int> forbidden(n + 2, 0);
+    const auto forbid = [&](Index from, Index to) {  // the cuts c in [from, to]
+        if (from > to) return;
+        ++forbidden[static_cast<std::size_t>(from)];
+        --forbidden[static_cast<std::size_t>(to) + 1];
+    };
     for (const StencilBlocks& body : bodies)
-        for (std::size_t k = 0; k < body.blocks.size(); ++k)
-            spans.push_back(
-                {body.blocks[k].begin, body.blocks[k].end, body.cost[k + 1] - body.cost[k]});
-    std::sort(spans.begin(), spans.end(),
-              [](const Span& a, const Span& b) { return a.begin < b.begin; });
-    // Where a cut may go (no block straddles it) and the cost before it.
-    std::vector<Index> position;
-    std::vector<std::ptrdiff_t> before;
-    std::ptrdiff_t total = 0;
-    Index reach = 0;
-    for (std::size_t k = 0; k < spans.size(); ++k) {
-        total += spans[k].cost;
-        reach = std::max(reach, spans[k].end);
-        if (k + 1 == spans.size() || spans[k + 1].begin >= reach) {
-            position.push_back(reach);
-            before.push_back(total);
+        for (const ParticleBlock& block : body.blocks) {
+            const std::ptrdiff_t unit = block.cost() / std::max<Index>(block.size(), 1);
+            for (Index i = 0; i < block.size(); ++i)
+                costBefore[static_cast<std::size_t>(block.particle(i)) + 1] = unit;
+            const Index m = block.size();
+            if (block.stride == 1 || !cutStrided || m < 2 * kMinStencilRun) {
+                forbid(block.begin + 1, block.particle(m - 1));
+            } else {
+                forbid(block.begin + 1, block.particle(kMinStencilRun - 1));
+                forbid(block.particle(m - kMinStencilRun) + 1, block.particle(m - 1));
+            }
         }
+    for (std::size_t c = 1; c <= n; ++c) {
+        costBefore[c] += costBefore[c - 1];
+        forbidden[c] += forbidden[c - 1];
     }
+    // Two cuts in one strided block: the part between them must be empty or a strip long too.
+    std::vector<ParticleBlock> strided;
+    for (const StencilBlocks& body : bodies)
+        for (const ParticleBlock& block : body.blocks)
+            if (block.stride > 1) strided.push_back(block);
+    const auto leavesAStub = [&](Index previous, Index c) {
+        for (const ParticleBlock& block : strided) {
+            const Index part = block.within(previous, c).size();
+            if (block.begin < previous && c < block.end && part > 0 && part < kMinStencilRun)
+                return true;
+        }
+        return false;
+    };
+    const std::ptrdiff_t total = costBefore[n];
     std::vector<Index> cuts(static_cast<std::size_t>(processes) + 1, 0);
     cuts.back() = particles;
-    std::size_t next = 0;
+    std::size_t c = 1;
     for (int r = 1; r < processes; ++r) {
         const std::ptrdiff_t target = total * r / processes;
         const Index previous = cuts[static_cast<std::size_t>(r) - 1];
-        while (next < position.size() && (before[next] < target || position[next] <= previous))
-            ++next;
-        if (next >= position.size() || position[next] >= particles)
+        while (c < n && (costBefore[c] < target || forbidden[c] > 0 ||
+                         leavesAStub(previous, static_cast<Index>(c))))
+            ++c;
+        if (c >= n)
             throw InputError(std::to_string(processes) + " processes for " +
-                             std::to_string(particles) + " particles in " +
-                             std::to_string(position.size()) +
-                             " indivisible blocks: some process would own none; run on fewer");
-        cuts[static_cast<std::size_t>(r)] = position[next];
+                             std::to_string(particles) +
+                             " particles: the blocks leave some process none; run on fewer");
+        cuts[static_cast<std::size_t>(r)] = static_cast<Index>(c++);
     }
     return cuts;
 }
@@ -86,11 +103,9 @@ std::vector<std::ptrdiff_t> costsOf(const std::vector<StencilBlocks>& bodies,
                                     const std::vector<Index>& cuts) {
     std::vector<std::ptrdiff_t> costs(cuts.size() - 1, 0);
     for (const StencilBlocks& body : bodies)
-        for (std::size_t k = 0; k < body.blocks.size(); ++k) {
-            const auto r =
-                std::upper_bound(cuts.begin(), cuts.end(), body.blocks[k].begin) - cuts.begin() - 1;
-            costs[static_cast<std::size_t>(r)] += body.cost[k + 1] - body.cost[k];
-        }
+        for (const ParticleBlock& block : body.blocks)
+            for (std::size_t r = 0; r + 1 < cuts.size(); ++r)
+                costs[r] += block.within(cuts[r], cuts[r + 1]).cost();
     return costs;
 }
 

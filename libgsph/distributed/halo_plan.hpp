@@ -2,16 +2,17 @@
 // The split of a run over processes and the ghosts each one needs (distributed/domain.hpp).
 //
 // Split: contiguous particle ranges of about equal cost (StencilBlocks::cost, the measure the
-// threads already share the block loops by), cut only where no block straddles the cut, so every
-// block runs whole on one process as it does in the serial run: each cut is the first such place
-// at or past its share of the cost. A lattice's corner-column blocks run across up to kMaxBlock
-// rows, so small layouts have few such places and their shares can differ by many blocks. Particles
-// are numbered space by space, lattice row by row, so a range is a set of slabs of the bodies'
-// lattices. Ghosts: every particle another process owns that one of this process's particles reads
-// in a step: its pairs' neighbours (Reference::pairs) and the particles whose transposed
-// cross-space pairs it sums (Reference::crossOwner). Computed once, in the reference configuration,
-// by every process for every other (each holds the whole reference): no message is needed to agree
-// on who sends what.
+// threads already share the block loops by), cut only where no block of consecutive particles
+// straddles the cut: each cut is the first such place at or past its share of the cost. A
+// lattice's corner-column blocks (stride a row, up to kMaxBlock rows) may be cut, into two
+// strided blocks with the same stencil, each at least a strip long (kMinStencilRun): every
+// particle keeps the path and the arithmetic of the serial run. Particles are numbered space by
+// space, lattice row by row, so a range is a set of slabs of the bodies' lattices. Ghosts: every
+// particle another process owns that one of this process's particles reads in a step: its
+// pairs' neighbours (Reference::pairs) and the particles whose transposed cross-space pairs it
+// sums (Reference::crossOwner). Computed once, in the reference configuration, by every process
+// for every other (each holds the whole reference): no message is needed to agree on who sends
+// what.
 #pragma once
 
 #include <vector>
@@ -23,9 +24,10 @@ namespace gsph {
 
 /// cuts[r], cuts[r + 1]: the particles process r owns (size processes + 1, cuts[0] = 0, back()
 /// = the particle count). Throws InputError when the blocks allow fewer than `processes`
-/// non-empty ranges.
+/// non-empty ranges. A process owns its range's part of a strided block that a cut splits
+/// (ParticleBlock::within); `cutStrided` false keeps every block whole.
 std::vector<Index> cutByCost(const std::vector<StencilBlocks>& bodies, Index particles,
-                             int processes);
+                             int processes, bool cutStrided = true);
 
 /// The cost of each process's range (size processes).
 std::vector<std::ptrdiff_t> costsOf(const std::vector<StencilBlocks>& bodies,

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <type_traits>
@@ -27,13 +28,21 @@ class MpiDomain final : public Domain {
         check(MPI_Comm_size(MPI_COMM_WORLD, &size_), "MPI_Comm_size");
     }
 
-    ParticleRange split(const Reference& ref, const std::vector<StencilBlocks>& blocks) override {
-        cuts_ = cutByCost(blocks, ref.size(), size_);
+    ParticleRange split(const Reference& ref, const std::vector<StencilBlocks>& blocks,
+                        bool cutStrided) override {
+        cuts_ = cutByCost(blocks, ref.size(), size_, cutStrided);
         peers_ = planHalo(ref, cuts_, rank_);
+        pairs_ = &ref.pairs;
+        ghosts_.clear();
+        for (const HaloPeer& peer : peers_)  // peers ascending, each one's range after the last's
+            ghosts_.insert(ghosts_.end(), peer.receive.begin(), peer.receive.end());
+        pairCuts_.clear();
+        for (Index c : cuts_)
+            pairCuts_.push_back(c < ref.size() ? ref.pairs.begin(c) : ref.pairs.pairs());
         outgoing_.resize(peers_.size());
         incoming_.resize(peers_.size());
         requests_.resize(2 * peers_.size());
-        byteRanges(sizeof(Vec3), positionCounts_, positionOffsets_);  // shareAll, every step
+        byteRanges(cuts_, sizeof(Vec3), positionCounts_, positionOffsets_);  // shareAll, every step
         describeSplit(costsOf(blocks, cuts_));
         const auto r = static_cast<std::size_t>(rank_);
         return {cuts_[r], cuts_[r + 1]};
@@ -41,31 +50,62 @@ class MpiDomain final : public Domain {
     int processes() const override { return size_; }
     bool writesFiles() const override { return rank_ == 0; }
 
-    void shareGhosts(GhostColumns which, std::span<double* const> columns) override {
-        const int tag = static_cast<int>(which);
-        for (std::size_t p = 0; p < peers_.size(); ++p) {
-            const HaloPeer& peer = peers_[p];
-            std::vector<double>& out = outgoing_[p];
-            out.resize(columns.size() * peer.send.size());
-            std::size_t i = 0;
-            for (double* column : columns)
-                for (Index a : peer.send) out[i++] = column[a];
-            incoming_[p].resize(columns.size() * peer.receive.size());
-            check(MPI_Irecv(incoming_[p].data(), static_cast<int>(incoming_[p].size()), MPI_DOUBLE,
-                            peer.process, tag, MPI_COMM_WORLD, &requests_[2 * p]),
-                  "MPI_Irecv");
-            check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_DOUBLE, peer.process, tag,
-                            MPI_COMM_WORLD, &requests_[2 * p + 1]),
-                  "MPI_Isend");
-        }
-        check(
-            MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE),
-            "MPI_Waitall");
-        for (std::size_t p = 0; p < peers_.size(); ++p) {
-            std::size_t i = 0;
-            for (double* column : columns)
-                for (Index a : peers_[p].receive) column[a] = incoming_[p][i++];
-        }
+    void shareGhosts(GhostColumns which, std::span<const GhostArray> arrays) override {
+        std::size_t entry = 0;
+        for (const GhostArray& array : arrays) entry += array.entryBytes;
+        exchange(
+            which,
+            [&](std::size_t p, bool sending) {
+                const HaloPeer& peer = peers_[p];
+                return (sending ? peer.send.size() : peer.receive.size()) * entry;
+            },
+            [&](std::size_t p, std::uint8_t* out) {
+                for (const GhostArray& array : arrays) {
+                    const auto* data = static_cast<const std::uint8_t*>(array.data);
+                    for (Index a : peers_[p].send) {
+                        std::memcpy(out, data + static_cast<std::size_t>(a) * array.entryBytes,
+                                    array.entryBytes);
+                        out += array.entryBytes;
+                    }
+                }
+            },
+            [&](std::size_t p, const std::uint8_t* in) {
+                for (const GhostArray& array : arrays) {
+                    auto* data = static_cast<std::uint8_t*>(array.data);
+                    for (Index a : peers_[p].receive) {
+                        std::memcpy(data + static_cast<std::size_t>(a) * array.entryBytes, in,
+                                    array.entryBytes);
+                        in += array.entryBytes;
+                    }
+                }
+            });
+    }
+
+    std::span<const Index> ghosts() const override { return ghosts_; }
+
+    void shareGhostRows(std::span<std::uint8_t> perPair) override {
+        const PairList& P = *pairs_;
+        const auto rows = [&](const std::vector<Index>& particles) {
+            std::size_t n = 0;
+            for (Index a : particles) n += static_cast<std::size_t>(P.end(a) - P.begin(a));
+            return n;
+        };
+        exchange(
+            GhostColumns::BondRows,
+            [&](std::size_t p, bool sending) {
+                return rows(sending ? peers_[p].send : peers_[p].receive);
+            },
+            [&](std::size_t p, std::uint8_t* out) {
+                for (Index a : peers_[p].send)
+                    out = std::copy(perPair.begin() + P.begin(a), perPair.begin() + P.end(a), out);
+            },
+            [&](std::size_t p, const std::uint8_t* in) {
+                for (Index a : peers_[p].receive) {
+                    const auto n = static_cast<std::size_t>(P.end(a) - P.begin(a));
+                    std::copy(in, in + n, perPair.begin() + P.begin(a));
+                    in += n;
+                }
+            });
     }
 
     void shareAll(std::vector<Vec3>& perParticle) override {
@@ -103,10 +143,12 @@ class MpiDomain final : public Domain {
 
     void gather(State& state) override {
         state.forEachArray([&](const Field& field, auto& array) {
-            if (field.extent != Extent::Particle || array.empty()) return;
+            if (array.empty()) return;
+            if (field.extent != Extent::Particle && field.extent != Extent::Pair) return;
             using T = typename std::decay_t<decltype(array)>::value_type;
             std::vector<int> counts, offsets;
-            byteRanges(sizeof(T), counts, offsets);
+            byteRanges(field.extent == Extent::Particle ? cuts_ : pairCuts_, sizeof(T), counts,
+                       offsets);
             auto* data = reinterpret_cast<std::uint8_t*>(array.data());
             const auto me = static_cast<std::size_t>(rank_);
             if (rank_ == 0)
@@ -123,24 +165,56 @@ class MpiDomain final : public Domain {
     std::string describe() const override { return description_; }
 
   private:
-    // Each process's range in bytes of an array of `size`-byte entries (MPI counts are ints).
-    void byteRanges(std::size_t size, std::vector<int>& counts, std::vector<int>& offsets) const {
-        counts.resize(static_cast<std::size_t>(size_));
+    // Each process's range in bytes of an array of `size`-byte entries, the processes' ranges
+    // of entries cut at `cuts` (MPI counts are ints).
+    static void byteRanges(const std::vector<Index>& cuts, std::size_t size,
+                           std::vector<int>& counts, std::vector<int>& offsets) {
+        counts.resize(cuts.size() - 1);
         offsets.resize(counts.size());
-        if (static_cast<std::size_t>(cuts_.back()) * size >
+        if (static_cast<std::size_t>(cuts.back()) * size >
             static_cast<std::size_t>(std::numeric_limits<int>::max()))
             throw InputError(
                 "a split run gathers whole state arrays on one process, at most 2 GB "
                 "each: " +
-                std::to_string(cuts_.back()) + " particles are too many");
+                std::to_string(cuts.back()) + " entries of " + std::to_string(size) +
+                " bytes are too many");
         for (std::size_t r = 0; r < counts.size(); ++r) {
-            counts[r] = static_cast<int>(static_cast<std::size_t>(cuts_[r + 1] - cuts_[r]) * size);
-            offsets[r] = static_cast<int>(static_cast<std::size_t>(cuts_[r]) * size);
+            counts[r] = static_cast<int>(static_cast<std::size_t>(cuts[r + 1] - cuts[r]) * size);
+            offsets[r] = static_cast<int>(static_cast<std::size_t>(cuts[r]) * size);
         }
     }
 
+    // One message to and from every peer, all at once: `bytes(p, sending)` their sizes,
+    // `pack(p, out)` fills the one to peer p, `unpack(p, in)` reads the one from it.
+    template <class Bytes, class Pack, class Unpack>
+    void exchange(GhostColumns which, Bytes&& bytes, Pack&& pack, Unpack&& unpack) {
+        const int tag = static_cast<int>(which);
+        for (std::size_t p = 0; p < peers_.size(); ++p) {
+            std::vector<std::uint8_t>& out = outgoing_[p];
+            out.resize(bytes(p, true));
+            pack(p, out.data());
+            incoming_[p].resize(bytes(p, false));
+            for (const std::size_t n : {out.size(), incoming_[p].size()})
+                if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+                    throw InputError(
+                        "a split run's ghost exchange exceeds 2 GB per message: "
+                        "run on more processes");
+            check(MPI_Irecv(incoming_[p].data(), static_cast<int>(incoming_[p].size()), MPI_BYTE,
+                            peers_[p].process, tag, MPI_COMM_WORLD, &requests_[2 * p]),
+                  "MPI_Irecv");
+            check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_BYTE, peers_[p].process,
+                            tag, MPI_COMM_WORLD, &requests_[2 * p + 1]),
+                  "MPI_Isend");
+        }
+        check(
+            MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE),
+            "MPI_Waitall");
+        for (std::size_t p = 0; p < peers_.size(); ++p) unpack(p, incoming_[p].data());
+    }
+
     // Ghosts over all processes and the most on one, and the bytes a step exchanges: per ghost,
-    // x and v (6 doubles) and the force factors (K, N, F: 27, and c, ρ, α, s: 4).
+    // x and v (6 doubles) and the force factors (K, N, F: 27, and c, ρ, α, s: 4); bonds that
+    // break add the damage and σ, and their rows when some break.
     void describeSplit(const std::vector<std::ptrdiff_t>& costs) {
         long mine = 0;
         for (const HaloPeer& peer : peers_) mine += static_cast<long>(peer.receive.size());
@@ -172,7 +246,10 @@ class MpiDomain final : public Domain {
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
     std::vector<HaloPeer> peers_;
-    std::vector<std::vector<double>> outgoing_, incoming_;
+    std::vector<Index> pairCuts_;  ///< the first pair (CSR entry) of each process's particles
+    std::vector<Index> ghosts_;    ///< every peer's receive list, ascending
+    const PairList* pairs_ = nullptr;
+    std::vector<std::vector<std::uint8_t>> outgoing_, incoming_;
     std::vector<MPI_Request> requests_;
     std::vector<double> partials_;
 };

@@ -99,7 +99,7 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
         throw InputError("cohesive flags: " + std::to_string(cohesive_.size()) + " values for " +
                          std::to_string(ref.size()) + " particles");
     for (FailedBondRule rule : failedRule_) {
-        if (rule != FailedBondRule::Keep) enabled_ = true;
+        if (rule != FailedBondRule::Keep) enabled_ = breaksByDamage_ = true;
         if (rule == FailedBondRule::Cut) anyCut_ = true;
     }
     for (double e : stretch_) {
@@ -121,6 +121,7 @@ BrittleBonds::BrittleBonds(const Reference& ref, std::vector<double> stretchByPa
         failedSeen_.assign(n, 0);
         newlyFailed_.assign(n, 0);
         nearNewlyFailed_.assign(n, 0);
+        neighbourFailed_.assign(static_cast<std::size_t>(ref.pairs.pairs()), 0);
     }
     if (anyCut_) cellFrame_.resize(n);
     parallelFor(ref.size(), [&](Index a) {
@@ -162,9 +163,9 @@ void BrittleBonds::refreshParticle(const State& state, Index a) {
     stepFactor_[ia] = spans && byDamage ? factor : 1.0;
 }
 
-void BrittleBonds::markStale() {
+void BrittleBonds::markStale(ParticleRange particles) {
     stale_.resize(damaged_.size());
-    parallelFor(ref_.size(), [&](Index a) {
+    parallelFor(particles, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         std::uint8_t stale = damaged_[ia];
         for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a) && stale == 0; ++k)
@@ -185,7 +186,7 @@ void BrittleBonds::attach(const State& state) {
         throw InputError("state has " + std::to_string(state.bondIntact.size()) +
                          " bond flags for " + std::to_string(ref_.pairs.pairs()) + " pairs");
     parallelFor(ref_.size(), [&](Index a) { refreshParticle(state, a); });
-    markStale();
+    markStale({0, ref_.size()});
     // Cut: the next call tries every failed particle again (the bonds it cut are broken
     // already, the others stay), so a resumed run cuts exactly what the uninterrupted one does.
     std::fill(failedSeen_.begin(), failedSeen_.end(), std::uint8_t{0});
@@ -209,7 +210,13 @@ double BrittleBonds::internalPower(const State& state, Index a) const {
 }
 
 BondBreak BrittleBonds::breakStretchedBonds(State& state) {
+    Domain serial;
+    return breakStretchedBonds(state, {0, ref_.size()}, serial);
+}
+
+BondBreak BrittleBonds::breakStretchedBonds(State& state, ParticleRange owned, Domain& domain) {
     if (!enabled_) return {};
+    const bool split = domain.processes() > 1;
     const PairList& P = ref_.pairs;
     std::uint8_t* intact = state.bondIntact.data();
     const auto stretched = [&](std::size_t ia, Index k, double factor) {
@@ -229,6 +236,28 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
             const auto ia = static_cast<std::size_t>(a);
             newlyFailed_[ia] = failed(ia) && failedSeen_[ia] == 0 ? 1 : 0;
         });
+        // Split: a bond to a ghost c is cut by c's neighbours too, which may be no neighbour
+        // of this process's particles; c's owner sends, per entry of c's row, whether that
+        // neighbour failed since the last call.
+        if (split) {
+            std::uint8_t mine = 0;
+            for (Index a = owned.begin; a < owned.end && mine == 0; ++a)
+                mine = newlyFailed_[static_cast<std::size_t>(a)];
+            if (domain.any(mine != 0)) {
+                parallelFor(owned, [&](Index a) {
+                    for (Index k = P.begin(a); k < P.end(a); ++k)
+                        neighbourFailed_[static_cast<std::size_t>(k)] =
+                            newlyFailed_[static_cast<std::size_t>(
+                                P.neighbor[static_cast<std::size_t>(k)])];
+                });
+                domain.shareGhostRows(neighbourFailed_);
+                for (Index c : domain.ghosts())
+                    for (Index k = P.begin(c); k < P.end(c); ++k)
+                        if (neighbourFailed_[static_cast<std::size_t>(k)] != 0)
+                            newlyFailed_[static_cast<std::size_t>(
+                                P.neighbor[static_cast<std::size_t>(k)])] = 1;
+            }
+        }
         parallelFor(ref_.size(), [&](Index a) {
             const auto ia = static_cast<std::size_t>(a);
             std::uint8_t near = 0;
@@ -261,7 +290,7 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
     // Each particle reads and writes only its own CSR entries (its old K:∇v before writing
     // them); (a, b) and (b, a) compare the same squared lengths and the same two damages, so
     // both sides decide alike.
-    parallelFor(ref_.size(), [&](Index a) {
+    parallelFor(owned, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         const double limit = stretch_[ia];
         changed_[ia] = 0;
@@ -300,22 +329,31 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state) {
             if (newlyFailed_[ia] != 0) failedSeen_[ia] = 1;
         });
     // Both sides of a pair break in the same call: each fresh pair is counted twice.
-    Index freshEntries = 0;
-    for (Index c : changed_) freshEntries += c;
-    if (freshEntries == 0) return {};
+    double freshEntries = 0.0;  // exact: far below 2^53
+    for (Index a = owned.begin; a < owned.end; ++a)
+        freshEntries += static_cast<double>(changed_[static_cast<std::size_t>(a)]);
+    if (split) domain.sum({&freshEntries, 1});
+    if (freshEntries == 0.0) return {};
     BondBreak result;
-    result.pairs = freshEntries / 2;
+    result.pairs = static_cast<Index>(freshEntries) / 2;
     brokenPairs_ += result.pairs;
-    parallelFor(ref_.size(), [&](Index a) {
+    // Split: the ghosts' rows from their owners, and what derives from them here.
+    if (split) {
+        domain.shareGhostRows(state.bondIntact);
+        const std::span<const Index> ghosts = domain.ghosts();
+        parallelFor(static_cast<Index>(ghosts.size()),
+                    [&](Index g) { refreshParticle(state, ghosts[static_cast<std::size_t>(g)]); });
+    }
+    parallelFor(owned, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         if (changed_[ia] == 0) return;
         refreshParticle(state, a);
         released_[ia] = 0.5 * state.dt * (released_[ia] - internalPower(state, a));
     });
-    markStale();
+    markStale(owned);
     result.releasedEnergy = deterministicSum(
-        ref_.size(), 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; },
-        partialSums_);
+        owned, 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; }, partialSums_);
+    if (split) domain.sum({&result.releasedEnergy, 1});
     return result;
 }
 

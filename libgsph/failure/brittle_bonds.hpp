@@ -67,6 +67,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/parallel.hpp"
+#include "distributed/domain.hpp"
 #include "particles/bond_view.hpp"
 #include "particles/reference.hpp"
 #include "particles/state.hpp"
@@ -156,6 +158,14 @@ class BrittleBonds {
     /// derives from it; returns the pairs broken and the energy they release, from state.v
     /// (v_{n+½}), state.F and state.cauchy (F_n, σ_n) and the step state.dt.
     BondBreak breakStretchedBonds(State& state);
+    /// The same for a run split over processes (distributed/domain.hpp): breaks the bonds of the
+    /// `owned` particles, whose neighbours' x, v, damage (and σ, with softening bonds) the
+    /// ghost exchanges have brought; then takes the ghosts' bond rows from their owners. The
+    /// pairs and the released energy returned are every process's (the energy summed in
+    /// process order). Collective: every process calls it at the same step.
+    BondBreak breakStretchedBonds(State& state, ParticleRange owned, Domain& domain);
+    /// True when some body's bonds break by Johnson–Cook damage (FailedBondRule other than Keep).
+    bool breaksByDamage() const { return breaksByDamage_; }
 
     /// G per particle: the reference's until a bond of the particle breaks.
     const std::vector<Mat3>& G() const { return enabled_ ? G_ : ref_.G; }
@@ -182,8 +192,8 @@ class BrittleBonds {
 
   private:
     void refreshParticle(const State& state, Index a);
-    /// Derives stale_ from damaged_ (BondView::stale).
-    void markStale();
+    /// Derives stale_ of `particles` from damaged_ (BondView::stale).
+    void markStale(ParticleRange particles);
     /// Records the softening of the pair at CSR entry k of particle ia (see above).
     void startSoftening(State& state, std::size_t ia, Index k) const;
     /// K : ∇v of particle a over its surviving bonds with its current G (0 when detached).
@@ -204,8 +214,11 @@ class BrittleBonds {
     std::vector<double> stepFactor_;        ///< per particle, see stepFactor
     std::vector<std::uint8_t> failedSeen_;  ///< Cut: failed at the last call (D ≥ 1)
     std::vector<std::uint8_t> newlyFailed_, nearNewlyFailed_;  ///< Cut: scratch of one call
+    /// Cut, split runs: per pair, whether its neighbour failed since the last call (scratch).
+    std::vector<std::uint8_t> neighbourFailed_;
     std::vector<Mat3> cellFrame_;  ///< Cut: (Δθ M)^{-1} per particle, physical → cell units
     bool anyCut_ = false;          ///< some body's rule is Cut
+    bool breaksByDamage_ = false;  ///< some body's rule is not Keep
     Index brokenPairs_ = 0;
 };
 

@@ -80,7 +80,8 @@ StageReport CohesiveBondStage::addForces(const State& state, ForceChannels& out)
     if (state.cohesiveTraction.size() != pairs || state.cohesiveStretch.size() != pairs)
         throw Error("softening bonds: the state holds no cohesive arrays of the pairs' size");
     const BondView view = bonds_.view(state);
-    parallelFor(ref_.size(), [&](Index a) {
+    owned_ = out.owned;
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         Vec3 force = Vec3::Zero();
         double frequency2 = 0.0;
@@ -115,7 +116,7 @@ StageReport CohesiveBondStage::addForces(const State& state, ForceChannels& out)
 
 void CohesiveBondStage::record(State& state) const {
     const BondView view = bonds_.view(state);
-    parallelFor(ref_.size(), [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         if (fractureEnergy_[ia] == 0.0 || view.keepsAll(a)) return;
         for (Index k = ref_.pairs.begin(a); k < ref_.pairs.end(a); ++k) {

@@ -75,6 +75,7 @@ class CohesiveBondStage final : public ForceStage {
     std::vector<double> onset_, fractureEnergy_;
     std::vector<double> traction_, energy_;  ///< β_a and ψ_a per particle (see above)
     std::vector<double> largestStretch_;     ///< per pair: m after the last evaluation
+    ParticleRange owned_;                    ///< the particles the last evaluation covered
 };
 
 }  // namespace gsph

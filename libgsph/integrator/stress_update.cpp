@@ -308,12 +308,13 @@ void StressUpdate::restrictTo(ParticleRange owned) {
         StencilBlocks kept;
         kept.stencils = body.stencils;
         kept.cost.push_back(0);
-        for (std::size_t k = 0; k < body.blocks.size(); ++k) {
-            const ParticleBlock& block = body.blocks[k];
-            if (block.begin < owned.begin || block.end > owned.end) continue;
+        for (const ParticleBlock& whole : body.blocks) {
+            // A strided block may be cut at the range's ends (distributed/halo_plan.hpp).
+            const ParticleBlock block = whole.within(owned.begin, owned.end);
+            if (block.size() == 0) continue;
             kept.blocks.push_back(block);
             kept.particles += block.size();
-            kept.cost.push_back(kept.cost.back() + body.cost[k + 1] - body.cost[k]);
+            kept.cost.push_back(kept.cost.back() + block.cost());
         }
         body = std::move(kept);
         staged_[b] = stageCsrPairs(ref_, body);

@@ -52,8 +52,9 @@ class StressUpdate {
     /// `owned` particles, summed over the domain's processes, to the state's ledger, in a fixed
     /// order (the plastic work is booked per particle by advance).
     void bookDissipation(State& state, ParticleRange owned, Domain& domain);
-    /// Keeps only the blocks of the `owned` particles (a range distributed/halo_plan.hpp cut at
-    /// block boundaries): advance() and the force loops then run on those alone.
+    /// Keeps only the blocks of the `owned` particles (a range distributed/halo_plan.hpp cut
+    /// between blocks or inside a strided one): advance() and the force loops then run on those
+    /// alone.
     void restrictTo(ParticleRange owned);
 
     const StressFactors& factors() const { return factors_; }

@@ -57,14 +57,8 @@ TimeStepRule timeStepRule(const SolverOptions& o) {
 }
 
 // What a run split over processes cannot do yet, or empty: each needs data beyond the ghosts
-// (bonds breaking across a cut, a current-configuration search, an average over a length).
+// (a current-configuration search within a body, an average over a length).
 std::string notSplittable(const SolverOptions& o, const std::vector<BodyRange>& bodies) {
-    for (double s : o.bondStretch)
-        if (s > 0.0) return "bonds that break by stretch";
-    for (FailedBondRule r : o.failedBonds)
-        if (r != FailedBondRule::Keep) return "bonds that break by damage";
-    if (!o.precracks.empty()) return "initial cracks";
-    if (softensBonds(o)) return "softening bonds";
     if (o.contact.selfContact) return "self-contact";
     for (const BodyRange& body : bodies)
         if (const JohnsonCookDamage* damage = damageModel(*body.material))
@@ -140,34 +134,43 @@ void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
                              " processes cannot do yet: run it on one");
     }
     domain_ = std::move(domain);
-    owned_ = domain_->split(ref_, stress_.blocks());
+    owned_ = domain_->split(ref_, stress_.blocks(), !bonds_.enabled());
     channels_.owned = owned_;
     stress_.restrictTo(owned_);
     sharesAllPositions_ = domain_->processes() > 1 && stage<PairContactStage>() != nullptr;
 }
 
-void VelocityVerlet::shareGhosts(GhostColumns which) {
+void VelocityVerlet::shareGhosts(State& state, GhostColumns which) {
     if (domain_->processes() == 1) return;
-    ghostColumns_.clear();
+    ghostArrays_.clear();
     const auto add = [&](auto& field) {
         for (int c = 0; c < std::decay_t<decltype(field)>::kComponents; ++c)
-            ghostColumns_.push_back(field.component(c));
+            ghostArrays_.push_back(ghostArray(field.component(c)));
     };
-    ParticleFields& fields = stress_.fields();
+    const double t0 = omp_get_wtime();
     if (which == GhostColumns::Motion) {
-        add(fields.x);
-        add(fields.v);
+        // The state's x, v (the bonds' stretch and released energy read them), then the SoA
+        // copies the stress update reads.
+        ghostArrays_ = {ghostArray(state.x.data()), ghostArray(state.v.data())};
+        domain_->shareGhosts(which, ghostArrays_);
+        const std::span<const Index> ghosts = domain_->ghosts();
+        parallelFor(static_cast<Index>(ghosts.size()),
+                    [&](Index g) { stress_.pack(state, ghosts[static_cast<std::size_t>(g)]); });
     } else {
         StressFactors& f = stress_.factors();
         add(f.K);
         add(f.N);
-        add(fields.F);
+        add(stress_.fields().F);
         for (std::vector<double>* column :
              {&f.soundSpeed, &f.density, &f.viscositySwitch, &f.hourglassScale})
-            ghostColumns_.push_back(column->data());
+            ghostArrays_.push_back(ghostArray(column->data()));
+        // Bonds that break: a failed neighbour breaks them, a softening one starts from the
+        // mean stress of its two ends.
+        if (bonds_.breaksByDamage() && !state.damage.empty())
+            ghostArrays_.push_back(ghostArray(state.damage.data()));
+        if (softensBonds(options_)) ghostArrays_.push_back(ghostArray(state.cauchy.data()));
+        domain_->shareGhosts(which, ghostArrays_);
     }
-    const double t0 = omp_get_wtime();
-    domain_->shareGhosts(which, ghostColumns_);
     times_.exchange += omp_get_wtime() - t0;
 }
 
@@ -223,7 +226,7 @@ void VelocityVerlet::initialize(State& state) {
     applyConstraints(constraints_, ref_, state, state.time);
     parallelFor(ref_.size(), [&](Index a) { stress_.pack(state, a); });
     stress_.advance(state, 0.0, true);
-    shareGhosts(GhostColumns::ForceFactors);
+    shareGhosts(state, GhostColumns::ForceFactors);
     computeAccelerations(state);
     state.dt = stableTimeStep(ref_, state, timeStepRule(options_), stress_.lengthScale(),
                               stress_.factors().soundSpeed, channels_.frequency2, owned_, *domain_);
@@ -254,14 +257,15 @@ void VelocityVerlet::step(State& state) {
         state.x[ia] += dt * state.v[ia];
         stress_.pack(state, a);
     });
-    shareGhosts(GhostColumns::Motion);
+    shareGhosts(state, GhostColumns::Motion);
     if (sharesAllPositions_) domain_->shareAll(state.x);
-    state.ledger.fractureEnergy += bonds_.breakStretchedBonds(state).releasedEnergy;
+    state.ledger.fractureEnergy +=
+        bonds_.breakStretchedBonds(state, owned_, *domain_).releasedEnergy;
     // 3–4: F, Ḟ, σ at t_{n+1} and their dissipation.
     state.time += dt;
     const double t1 = omp_get_wtime();
     stress_.advance(state, dt, false);
-    shareGhosts(GhostColumns::ForceFactors);
+    shareGhosts(state, GhostColumns::ForceFactors);
     stress_.bookDissipation(state, owned_, *domain_);
     const double t2 = omp_get_wtime();
     // 5: the stages' forces (viscosity sees v_{n+½}).

@@ -142,7 +142,7 @@ class VelocityVerlet {
   private:
     void computeAccelerations(State& state);
     /// The ghosts' columns of one exchange point (distributed/domain.hpp).
-    void shareGhosts(GhostColumns which);
+    void shareGhosts(State& state, GhostColumns which);
     /// The ledger's powers now, summed over the processes.
     LedgerPowers powersNow(const State& state);
 
@@ -159,7 +159,7 @@ class VelocityVerlet {
     PhaseTimes times_;
     std::shared_ptr<Domain> domain_ = std::make_shared<Domain>();
     ParticleRange owned_;
-    std::vector<double*> ghostColumns_;  ///< scratch of shareGhosts
+    std::vector<GhostArray> ghostArrays_;  ///< scratch of shareGhosts
     /// Split with contact between bodies: every process gets every position after the drift.
     bool sharesAllPositions_ = false;
 };

@@ -134,7 +134,7 @@ StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end,
               [](const ParticleBlock& x, const ParticleBlock& y) { return x.begin < y.begin; });
     out.cost.assign(1, 0);
     for (const ParticleBlock& block : out.blocks)
-        out.cost.push_back(out.cost.back() + block.size() * (block.stencil == kNoStencil ? 4 : 1));
+        out.cost.push_back(out.cost.back() + block.cost());
     return out;
 }
 

@@ -21,6 +21,7 @@
 // body; read-only afterwards.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -59,6 +60,16 @@ struct ParticleBlock {
     Index stride = 1;            ///< 1, or > 1 for a stencil block across rows (see above)
     Index size() const { return (end - begin + stride - 1) / stride; }
     Index particle(Index i) const { return begin + i * stride; }
+    /// Its share of StencilBlocks::cost: a CSR particle costs 4 stencil ones (see there).
+    std::ptrdiff_t cost() const { return size() * (stencil == kNoStencil ? 4 : 1); }
+    /// The block's particles in [lo, hi), with its stencil and stride (size 0 when none are):
+    /// a strided block cut where a run is split over processes (distributed/halo_plan.hpp).
+    ParticleBlock within(Index lo, Index hi) const {
+        const Index first = lo <= begin ? 0 : (lo - begin + stride - 1) / stride;
+        const Index last = hi <= begin ? 0 : std::min(size(), (hi - begin + stride - 1) / stride);
+        if (last <= first) return {begin, begin, stencil, stride};
+        return {particle(first), particle(last - 1) + 1, stencil, stride};
+    }
 };
 
 struct StencilBlocks {
