@@ -30,11 +30,13 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "case_config.hpp"
 #include "core/error.hpp"
@@ -229,8 +231,15 @@ int main(int argc, char** argv) {
         log.record(std::string("error: ") + e.what());
         status = kExitWriteFailed;
     } catch (const std::exception& e) {  // gsph::Error, and e.g. a folder that cannot be made
-        // The same on every process of a split run (bad input): said once.
-        if (writes) std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
+        // Split, bad input is the same on every process: process 0 says it and ends them all;
+        // another process says it only if process 0 has not ended it by then (a fault of its
+        // own).
+        if (writes) {
+            std::fprintf(stderr, "gsph-solve: error: %s\n", e.what());
+        } else {
+            std::this_thread::sleep_for(std::chrono::seconds(3));
+            std::fprintf(stderr, "gsph-solve: process %d: error: %s\n", processes.rank, e.what());
+        }
         log.record(std::string("error: ") + e.what());
         status = kExitError;
     }
