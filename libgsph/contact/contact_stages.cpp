@@ -5,7 +5,7 @@ namespace gsph {
 
 StageReport PairContactStage::addForces(const State& state, ForceChannels& out) {
     StageReport report;
-    contact_.restrictTo(out.owned);
+    contact_.restrictTo(out.owned, out.domain);
     report.potential = contact_.addForces(state.x, out.force, out.frequency2, state.bondIntact,
                                           state.contactSeparation);
     return report;

@@ -106,12 +106,15 @@ void PenaltyContact::markDamaged(const std::vector<std::uint8_t>& bondIntact) {
     const PairList& P = ref_->pairs;
     anyDamaged_ = false;
     if (!selfContact_ || bondIntact.empty()) return;
-    parallelFor(ref_->size(), [&](Index a) {
+    // Each particle from its own bonds; split, every process's particles from their owners
+    // (a pair of one body may join any two particles the motion brings together).
+    parallelFor(owned_, [&](Index a) {
         std::uint8_t lost = 0;
         for (Index k = P.begin(a); k < P.end(a) && !lost; ++k)
             lost = bondIntact[static_cast<std::size_t>(k)] == 0;
         damaged_[static_cast<std::size_t>(a)] = lost;
     });
+    if (domain_ != nullptr && domain_->processes() > 1) domain_->shareAll(damaged_);
     anyDamaged_ = std::any_of(damaged_.begin(), damaged_.end(), [](std::uint8_t d) { return d; });
 }
 
@@ -131,7 +134,7 @@ void PenaltyContact::recordSeparations(const std::vector<Vec3>& x,
     if (separation.size() != bondIntact.size()) separation.assign(bondIntact.size(), 0.0);
     if (!anyDamaged_) return;
     const Reference& ref = *ref_;
-    parallelFor(ref.size(), [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         if (!damaged_[ia]) return;
         for (Index k = P.begin(a); k < P.end(a); ++k) {

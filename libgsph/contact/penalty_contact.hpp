@@ -32,6 +32,7 @@
 
 #include "core/parallel.hpp"
 #include "core/types.hpp"
+#include "distributed/domain.hpp"
 #include "particles/reference.hpp"
 
 namespace gsph {
@@ -74,8 +75,12 @@ class PenaltyContact {
     bool active() const { return active_; }
     /// The particles whose forces, energy and body totals addForces computes (all of them
     /// unless set: a process of a split run, distributed/domain.hpp). The search still covers
-    /// every particle, so x must hold every particle's position.
-    void restrictTo(ParticleRange owned) { owned_ = owned; }
+    /// every particle, so x must hold every particle's position; with self-contact, which
+    /// particles have lost a bond is shared over `domain` (null: serial).
+    void restrictTo(ParticleRange owned, Domain* domain = nullptr) {
+        owned_ = owned;
+        domain_ = domain;
+    }
 
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
     /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J].
@@ -139,6 +144,7 @@ class PenaltyContact {
     std::vector<double> partial_;  ///< scratch of deterministicSum
     long pairs_ = 0;
     ParticleRange owned_;
+    Domain* domain_ = nullptr;
 };
 
 }  // namespace gsph

@@ -80,6 +80,8 @@ class Domain {
     /// Every process gets every process's entries of a per-particle array (collective): the
     /// positions a search in the current configuration (contact between bodies) reads.
     virtual void shareAll(std::vector<Vec3>& perParticle) { (void)perParticle; }
+    /// The same for a per-particle flag (self-contact: which particles have lost a bond).
+    virtual void shareAll(std::vector<std::uint8_t>& perParticle) { (void)perParticle; }
     /// The minimum over the processes (exact).
     virtual double minimum(double local) { return local; }
     /// Each value summed over the processes.

@@ -42,7 +42,9 @@ class MpiDomain final : public Domain {
         outgoing_.resize(peers_.size());
         incoming_.resize(peers_.size());
         requests_.resize(2 * peers_.size());
-        byteRanges(cuts_, sizeof(Vec3), positionCounts_, positionOffsets_);  // shareAll, every step
+        // shareAll, every step.
+        byteRanges(cuts_, sizeof(Vec3), positionCounts_, positionOffsets_);
+        byteRanges(cuts_, 1, flagCounts_, flagOffsets_);
         describeSplit(costsOf(blocks, cuts_));
         const auto r = static_cast<std::size_t>(rank_);
         return {cuts_[r], cuts_[r + 1]};
@@ -111,6 +113,12 @@ class MpiDomain final : public Domain {
     void shareAll(std::vector<Vec3>& perParticle) override {
         check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), positionCounts_.data(),
                              positionOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
+              "MPI_Allgatherv");
+    }
+
+    void shareAll(std::vector<std::uint8_t>& perParticle) override {
+        check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), flagCounts_.data(),
+                             flagOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
               "MPI_Allgatherv");
     }
 
@@ -243,6 +251,7 @@ class MpiDomain final : public Domain {
 
     std::string description_;
     std::vector<int> positionCounts_, positionOffsets_;  ///< byteRanges of a Vec3 array
+    std::vector<int> flagCounts_, flagOffsets_;          ///< byteRanges of a byte array
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
     std::vector<HaloPeer> peers_;

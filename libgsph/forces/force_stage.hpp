@@ -20,6 +20,7 @@
 
 #include "core/parallel.hpp"
 #include "core/types.hpp"
+#include "distributed/domain.hpp"
 #include "particles/state.hpp"
 
 namespace gsph {
@@ -36,6 +37,9 @@ struct ForceChannels {
     /// serial run; distributed/domain.hpp). A stage may write others' entries too: nothing reads
     /// them.
     ParticleRange owned;
+    /// The split (distributed/domain.hpp), for a stage that must share what its own particles
+    /// found with the other processes; null in a serial run.
+    Domain* domain = nullptr;
     std::vector<Vec3> force;
     ForceParts parts;  ///< viscous, hourglass, cohesive
     std::vector<Vec3> external;

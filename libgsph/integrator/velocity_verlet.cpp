@@ -56,10 +56,9 @@ TimeStepRule timeStepRule(const SolverOptions& o) {
     return {o.cfl, o.fixedTimeStep, o.minTimeStepRatio};
 }
 
-// What a run split over processes cannot do yet, or empty: each needs data beyond the ghosts
-// (a current-configuration search within a body, an average over a length).
-std::string notSplittable(const SolverOptions& o, const std::vector<BodyRange>& bodies) {
-    if (o.contact.selfContact) return "self-contact";
+// What a run split over processes cannot do yet, or empty: an average over a material length
+// reaches beyond the ghosts.
+std::string notSplittable(const std::vector<BodyRange>& bodies) {
     for (const BodyRange& body : bodies)
         if (const JohnsonCookDamage* damage = damageModel(*body.material))
             if (damage->nonlocal()) return "a nonlocal damage";
@@ -127,7 +126,7 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
 
 void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
     if (domain->processes() > 1) {
-        const std::string what = notSplittable(options_, bodies_);
+        const std::string what = notSplittable(bodies_);
         if (!what.empty())
             throw InputError("this run has " + what + ", which a run on " +
                              std::to_string(domain->processes()) +
@@ -136,6 +135,7 @@ void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
     domain_ = std::move(domain);
     owned_ = domain_->split(ref_, stress_.blocks(), !bonds_.enabled());
     channels_.owned = owned_;
+    channels_.domain = domain_.get();
     stress_.restrictTo(owned_);
     sharesAllPositions_ = domain_->processes() > 1 && stage<PairContactStage>() != nullptr;
 }

@@ -24,9 +24,9 @@ below). Asserts
     detached particles, contact between the plug and the projectile) to 24 us, on 2, 3 and 4
     processes: every snapshot and the checkpoint's state as above, the run.log's bond count
     equal; Kalthoff-Winkler stopped on 4 processes and continued on 2, the final snapshot
-    byte for byte;
-  - a run a split cannot do yet (self-contact) is refused on 2 processes with exit code 1 and
-    the message saying so.
+    byte for byte; the perforation with self-contact on 3 processes likewise;
+  - a run a split cannot do yet (a nonlocal damage) is refused on 2 processes with exit code 1
+    and the message saying so.
 Exit status 0 when all hold, 1 otherwise.
 """
 import argparse
@@ -121,8 +121,8 @@ def bond_line(folder):
         return [line for line in f if line.startswith("bonds:")]
 
 
-def split_like_serial(a, name, case, args, env, bonds=False):
-    """Runs `case` with the serial gsph-solve and on 2, 3, 4 processes: the faults and the
+def split_like_serial(a, name, case, args, env, bonds=False, counts=(2, 3, 4)):
+    """Runs `case` with the serial gsph-solve and on `counts` processes: the faults and the
     serial run's folder (None when it failed). `bonds`: run.log's bond count must match too."""
     serial = os.path.join(a.out, f"{name}_serial")
     with open(serial + ".log", "w") as out:
@@ -134,7 +134,7 @@ def split_like_serial(a, name, case, args, env, bonds=False):
     names, rows = history(os.path.join(serial, "history.csv"))
     ledger_scale = float(np.max(np.abs(rows[:, names.index("kinetic_energy")])))
     faults = []
-    for n in (2, 3, 4):
+    for n in counts:
         folder = os.path.join(a.out, f"{name}_np{n}")
         if run(mpirun(n, [a.mpi_solve, case, "-o", folder, "--overwrite"] + args),
                folder + ".log") != 0:
@@ -239,21 +239,37 @@ def main():
         os.path.join(a.out, "plate_perforation.preproc.log"))
     faults += split_like_serial(a, "plate_perforation", perforation,
                                 ["--particles", pf, "--end-time", "2.4e-5"], env, bonds=True)[0]
-    # What a split run cannot do yet is refused, with one line and exit code 1.
-    self_contact = os.path.join(a.out, "self_contact.toml")
+    # Self-contact (the plug and the plate it leaves, the detached particles between them): the
+    # perforation again, on 3 processes.
     with open(perforation) as f:
         text = f.read()
+    self_contact = os.path.join(a.out, "self_contact.toml")
     with open(self_contact, "w") as f:
-        f.write(text.replace("[contact]", "[contact]\nself_contact = true", 1))
+        f.write(text.replace("between_bodies = true", "between_bodies = true\nself_contact = true",
+                             1))
+    faults += split_like_serial(a, "self_contact", self_contact,
+                                ["--particles", pf, "--end-time", "2.4e-5"], env, bonds=True,
+                                counts=(3,))[0]
+    # What a split run cannot do yet is refused, with one line and exit code 1: a nonlocal
+    # damage (the plate's material with a material length).
+    with open(os.path.join(a.source, "materials/weldox_460e.toml")) as f:
+        material = f.read()
+    nonlocal_material = os.path.join(a.out, "weldox_nonlocal.toml")
+    with open(nonlocal_material, "w") as f:
+        f.write(material.replace("\ndamage = [", "\ndamage_length = 0.002\ndamage = [", 1))
+    nonlocal_case = os.path.join(a.out, "nonlocal.toml")
+    with open(nonlocal_case, "w") as f:
+        f.write(text.replace('file = "materials/weldox_460e.toml"',
+                             f'file = "{nonlocal_material}"', 1))
     refused = os.path.join(a.out, "refused")
-    code = run(mpirun(2, [a.mpi_solve, self_contact, "--particles", pf, "-o", refused,
+    code = run(mpirun(2, [a.mpi_solve, nonlocal_case, "--particles", pf, "-o", refused,
                           "--overwrite"]), refused + ".log")
     with open(refused + ".log") as f:
         said = f.read()
-    if code != 1 or "self-contact, which a run on 2 processes cannot do yet" not in said:
-        faults.append(f"self-contact on 2 processes: exit {code}, not refused")
+    if code != 1 or "a nonlocal damage, which a run on 2 processes cannot do yet" not in said:
+        faults.append(f"nonlocal damage on 2 processes: exit {code}, not refused")
     else:
-        print("self-contact on 2 processes: refused")
+        print("nonlocal damage on 2 processes: refused")
     for f in faults:
         print("FAIL", f)
     print("split runs: " + ("all equal" if not faults else f"{len(faults)} faults"))
