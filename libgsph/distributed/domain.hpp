@@ -2,9 +2,10 @@
 // A run split over processes (ranks): what the integrator needs to know of the split.
 //
 // Every process holds the whole reference configuration and state arrays indexed by the global
-// particle index, and advances only its own particles, a contiguous range cut at stencil-block
-// boundaries (distributed/halo_plan.hpp): its blocks keep the paths (stencil or CSR) and the
-// arithmetic of the serial run, so each particle's bits do not depend on the process count.
+// particle index, and advances only its own particles, a contiguous range cut between stencil
+// blocks or inside a strided one (distributed/halo_plan.hpp): every particle keeps the path
+// (stencil or CSR) and the arithmetic of the serial run, so its bits do not depend on the
+// process count.
 // Within a step a particle reads its neighbours twice: their x, v after the drift (for F, Ḟ,
 // and the bonds' stretch) and their force factors after the stress update (for the pair forces;
 // with bonds that break, also their damage and stress); shareGhosts brings those entries of the

@@ -52,9 +52,8 @@ std::vector<Index> cutByCost(const std::vector<StencilBlocks>& bodies, Index par
     };
     for (const StencilBlocks& body : bodies)
         for (const ParticleBlock& block : body.blocks) {
-            const std::ptrdiff_t unit = block.cost() / std::max<Index>(block.size(), 1);
             for (Index i = 0; i < block.size(); ++i)
-                costBefore[static_cast<std::size_t>(block.particle(i)) + 1] = unit;
+                costBefore[static_cast<std::size_t>(block.particle(i)) + 1] = block.particleCost();
             const Index m = block.size();
             if (block.stride == 1 || !cutStrided || m < 2 * kMinStencilRun) {
                 forbid(block.begin + 1, block.particle(m - 1));

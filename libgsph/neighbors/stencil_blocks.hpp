@@ -60,8 +60,10 @@ struct ParticleBlock {
     Index stride = 1;            ///< 1, or > 1 for a stencil block across rows (see above)
     Index size() const { return (end - begin + stride - 1) / stride; }
     Index particle(Index i) const { return begin + i * stride; }
-    /// Its share of StencilBlocks::cost: a CSR particle costs 4 stencil ones (see there).
-    std::ptrdiff_t cost() const { return size() * (stencil == kNoStencil ? 4 : 1); }
+    /// One particle's share of StencilBlocks::cost: a CSR particle costs 4 stencil ones (see
+    /// there); the block's share.
+    std::ptrdiff_t particleCost() const { return stencil == kNoStencil ? 4 : 1; }
+    std::ptrdiff_t cost() const { return size() * particleCost(); }
     /// The block's particles in [lo, hi), with its stencil and stride (size 0 when none are):
     /// a strided block cut where a run is split over processes (distributed/halo_plan.hpp).
     ParticleBlock within(Index lo, Index hi) const {
