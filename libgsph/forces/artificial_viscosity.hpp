@@ -22,6 +22,7 @@
 #include <algorithm>
 
 #include "core/lanes.hpp"
+#include "core/strip_mat3.hpp"
 #include "core/types.hpp"
 
 namespace gsph {
@@ -39,11 +40,13 @@ struct ViscosityCoefficients {
 inline constexpr ViscosityCoefficients kDefaultViscosity{1.0, 1.0, 0.01};
 
 /// The switch α_a ∈ [0, 1] of a particle with smoothing length h [m], volumetric strain rate
-/// trD = tr D [1/s] and sound speed c [m/s]; 1 when the switch is off.
-inline double viscositySwitch(const ViscosityCoefficients& coefficients, double h, double trD,
-                              double c) {
-    if (coefficients.switchMach == 0.0) return 1.0;
-    const double mach = h * std::max(-trD, 0.0) / c;
+/// trD = tr D [1/s] and sound speed c [m/s]; 1 when the switch is off. T: double or a strip
+/// type (one particle per lane, core/strip_mat3.hpp).
+template <class T>
+[[gnu::always_inline]] inline T viscositySwitch(const ViscosityCoefficients& coefficients,
+                                                const T& h, const T& trD, const T& c) {
+    if (coefficients.switchMach == 0.0) return T{} + 1.0;
+    const T mach = h * maxOf(-trD, T{} + 0.0) / c;
     const double m0 = coefficients.switchMach;
     return mach * mach / (mach * mach + m0 * m0);
 }

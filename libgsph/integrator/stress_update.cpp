@@ -3,11 +3,15 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 #include "core/error.hpp"
+#include "core/lanes.hpp"
 #include "core/parallel.hpp"
+#include "core/strip_mat3.hpp"
 #include "forces/hourglass.hpp"
 #include "kinematics/deformation_gradient.hpp"
 #include "materials/stress_measures.hpp"
@@ -15,15 +19,6 @@
 
 namespace gsph {
 namespace {
-
-// Lower bound of the smallest stretch σ_min(F) = 1/‖F^{-1}‖₂ ≥ 1/√(‖F^{-1}‖₁‖F^{-1}‖∞):
-// exact for diagonal F, cheap, and conservative for the time step. With F^{-1} = (cof F)^T/J:
-// ‖F^{-1}‖₁‖F^{-1}‖∞ = ‖cof F‖∞‖cof F‖₁/J².
-double smallestStretchBound(const Mat3& cof, double J) {
-    const double norm1 = cof.cwiseAbs().colwise().sum().maxCoeff();
-    const double normInf = cof.cwiseAbs().rowwise().sum().maxCoeff();
-    return J / std::sqrt(norm1 * normInf);
-}
 
 enum class Failure : std::uint8_t { None, Inverted, NotFinite };
 
@@ -48,10 +43,174 @@ struct KinematicsStep {
     bool plasticHourglass;  // s_a of forces/hourglass.hpp from the plastic strain (else 1)
 };
 
-// The viscosity's compression switch from the step's tr D (0: at rest, detached).
-void storeSwitch(KinematicsStep& s, std::size_t ia, double trD) {
-    s.factors.viscositySwitch[ia] =
-        viscositySwitch(s.viscosity, s.ref.smoothingLength[ia], trD, s.factors.soundSpeed[ia]);
+// Lower bound of the smallest stretch σ_min(F) = 1/‖F^{-1}‖₂ ≥ 1/√(‖F^{-1}‖₁‖F^{-1}‖∞):
+// exact for diagonal F, cheap, and conservative for the time step. With F^{-1} = (cof F)^T/J:
+// ‖F^{-1}‖₁‖F^{-1}‖∞ = ‖cof F‖∞‖cof F‖₁/J².
+template <class T>
+[[gnu::always_inline]] inline T smallestStretchBound(const StripMat3<T>& cof, const T& J) {
+    T colSum[3], rowSum[3];
+    for (int k = 0; k < 3; ++k) {
+        colSum[k] = absOf(cof(0, k)) + absOf(cof(1, k)) + absOf(cof(2, k));
+        rowSum[k] = absOf(cof(k, 0)) + absOf(cof(k, 1)) + absOf(cof(k, 2));
+    }
+    const T norm1 = maxOf(maxOf(colSum[0], colSum[1]), colSum[2]);
+    const T normInf = maxOf(maxOf(rowSum[0], rowSum[1]), rowSum[2]);
+    return J / sqrtOf(norm1 * normInf);
+}
+
+// The particles of a strip: lane j holds row i0 + j of a block (rows past the strip's n repeat
+// its last row; they are computed and not stored). T: double (one particle) or a strip type.
+template <class T>
+struct StripParticles {
+    static constexpr int kWidth = kLanesOf<T>;
+    int n = 0;
+    Index row[kWidth];
+    std::size_t index[kWidth];
+    bool skip[kWidth];  // detached: detachParticle takes it
+    // Every lane a particle to store, lane j particle index[0] + j: per-particle arrays are
+    // loaded and stored as whole strips.
+    bool contiguous = false;
+
+    StripParticles(const ParticleBlock& block, Index i0, int count, const BrittleBonds& bonds)
+        : n(count) {
+        bool anySkipped = false;
+        for (int j = 0; j < kWidth; ++j) {
+            row[j] = i0 + std::min(j, n - 1);
+            const Index a = block.particle(row[j]);
+            index[j] = static_cast<std::size_t>(a);
+            skip[j] = j >= n || bonds.detached(a);
+            anySkipped = anySkipped || skip[j];
+        }
+        contiguous = !anySkipped && (kWidth == 1 || block.stride == 1);
+    }
+    // The lanes of a per-particle array, or of a block's row-major array.
+    [[gnu::always_inline]] T of(const double* perParticle) const {
+        T v;
+        if constexpr (std::is_arithmetic_v<T>)
+            v = perParticle[index[0]];
+        else if (contiguous)
+            v = loadLanes<T>(perParticle + index[0]);
+        else
+            for (int j = 0; j < kWidth; ++j) v[j] = perParticle[index[j]];
+        return v;
+    }
+    [[gnu::always_inline]] T of(const std::vector<double>& perParticle) const {
+        return of(perParticle.data());
+    }
+    [[gnu::always_inline]] T ofRows(const double* rows) const {
+        T v;
+        if constexpr (std::is_arithmetic_v<T>)
+            v = rows[row[0]];
+        else if (n == kWidth)
+            v = loadLanes<T>(rows + row[0]);
+        else
+            for (int j = 0; j < kWidth; ++j) v[j] = rows[row[j]];
+        return v;
+    }
+    // Stores the lanes into a per-particle array (contiguous strips only).
+    [[gnu::always_inline]] void store(double* perParticle, const T& v) const {
+        if constexpr (std::is_arithmetic_v<T>)
+            perParticle[index[0]] = v;
+        else
+            storeLanes<T>(perParticle + index[0], v);
+    }
+    [[gnu::always_inline]] void store(Mat3Field& field, const StripMat3<T>& m) const {
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) store(field.component(3 * r + c), m(r, c));
+    }
+    [[gnu::always_inline]] StripMat3<T> of(const Mat3* perParticle) const {
+        const Mat3* m[kWidth];
+        for (int j = 0; j < kWidth; ++j) m[j] = &perParticle[index[j]];
+        return lanesOf<T>(m);
+    }
+    // A block's θ-gradients (BlockThetaGradients, component-major).
+    [[gnu::always_inline]] StripMat3<T> of(const double (&g)[9][kMaxBlock]) const {
+        StripMat3<T> m;
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) m(r, c) = ofRows(g[3 * r + c]);
+        return m;
+    }
+};
+
+// Sets lane j of v (v itself for double).
+template <class T>
+[[gnu::always_inline]] inline void setLane(T& v, int j, double value) {
+    if constexpr (std::is_arithmetic_v<T>)
+        v = value;
+    else
+        v[j] = value;
+}
+
+// The factors the force loop reads, from F and σ at t_{n+1} (DESIGN §4):
+// P = J σ F^{-T}; N = V J F^{-T} G = V (cof F) G, K = σ N = V P G; the density ρ0/J, the sound
+// speed, the time step's length and the viscosity's switch from tr L. For the lanes of p not
+// skipped; `points` (T = double) the material point whose sound speed the model gives.
+template <class Model, class T>
+[[gnu::always_inline]] inline void storeFactors(const Model& model, KinematicsStep& s,
+                                                const StripParticles<T>& p, const StripMat3<T>& F,
+                                                const StripMat3<T>& cauchy, const T& trL,
+                                                MaterialPoint* point) {
+    const StripMat3<T> C = cofactor(F);
+    const T J = F(0, 0) * C(0, 0) + F(1, 0) * C(1, 0) + F(2, 0) * C(2, 0);
+    const T density = model.elastic().density / J;
+    const StripMat3<T> N = p.of(s.ref.quadVolume) * C * p.of(s.G);
+    const StripMat3<T> K = cauchy * N;
+    T soundSpeed;
+    if constexpr (std::is_arithmetic_v<T>) {
+        point->density = density;
+        soundSpeed = model.waveSpeed(*point);
+    } else {
+        soundSpeed = T{} + model.waveSpeed(MaterialPoint{});  // a constant of the model
+    }
+    const T bound = smallestStretchBound(C, J);
+    const T alpha = viscositySwitch(s.viscosity, p.of(s.ref.smoothingLength), trL, soundSpeed);
+    if (p.contiguous) {
+        // Whole strips where every lane is sound (J > 0, σ finite: σ − σ is 0).
+        T finite = cauchy(0, 0) - cauchy(0, 0);
+        for (int r = 0; r < 3; ++r)
+            for (int c = 0; c < 3; ++c) finite = finite + (cauchy(r, c) - cauchy(r, c));
+        bool sound = true;
+        T stepFactor;
+        for (int j = 0; j < p.kWidth; ++j) {
+            sound = sound && laneOf(J, j) > 0.0 && laneOf(finite, j) == 0.0;
+            setLane(stepFactor, j, s.bonds.stepFactor(static_cast<Index>(p.index[j])));
+        }
+        if (sound) {
+            p.store(s.factors.N, N);
+            p.store(s.factors.K, K);
+            p.store(s.factors.density.data(), density);
+            p.store(s.factors.soundSpeed.data(), soundSpeed);
+            p.store(s.factors.viscositySwitch.data(), alpha);
+            p.store(s.fields.F, F);
+            // A particle whose surviving bonds raise its G stiffens its pair forces as ‖G‖²
+            // (failure/brittle_bonds.hpp, stepFactor).
+            p.store(s.lengthScale.data(), p.of(s.ref.spacing) * bound * stepFactor);
+            for (int j = 0; j < p.kWidth; ++j)
+                s.failure[p.index[j]] = static_cast<std::uint8_t>(Failure::None);
+            return;
+        }
+    }
+    for (int j = 0; j < p.kWidth; ++j) {
+        if (p.skip[j]) continue;
+        const std::size_t ia = p.index[j];
+        const double Jj = laneOf(J, j);
+        if (!(Jj > 0.0)) {
+            s.failure[ia] = static_cast<std::uint8_t>(std::isfinite(Jj) ? Failure::Inverted
+                                                                        : Failure::NotFinite);
+            continue;
+        }
+        const Mat3 Nj = laneOf(N, j), Kj = laneOf(K, j), sigma = laneOf(cauchy, j);
+        s.factors.N.set(ia, Nj);
+        s.factors.K.set(ia, Kj);
+        s.factors.density[ia] = laneOf(density, j);
+        s.factors.soundSpeed[ia] = laneOf(soundSpeed, j);
+        s.factors.viscositySwitch[ia] = laneOf(alpha, j);
+        s.fields.F.set(ia, laneOf(F, j));
+        s.lengthScale[ia] =
+            s.ref.spacing[ia] * laneOf(bound, j) * s.bonds.stepFactor(static_cast<Index>(ia));
+        s.failure[ia] =
+            static_cast<std::uint8_t>(sigma.allFinite() ? Failure::None : Failure::NotFinite);
+    }
 }
 
 // s_a of the hourglass penalty (forces/hourglass.hpp) from σ and ε̄p at t_{n+1}.
@@ -64,71 +223,127 @@ void storeHourglassScale(const Model& model, KinematicsStep& s, std::size_t ia, 
             : 1.0;
 }
 
-// The factors the force loop reads, from F and σ at t_{n+1}:
-// P = J σ F^{-T} (DESIGN §4); N = V J F^{-T} G = V (cof F) G, K = σ N = V P G.
+// Whether a model's update runs across the lanes of a strip: the hypo-elastic one (no history,
+// the Jaumann update alone); the others one particle at a time.
 template <class Model>
-void storeFactors(const Model& model, KinematicsStep& s, std::size_t ia, const Mat3& F,
-                  MaterialPoint& point) {
-    const Mat3 C = cofactor(F);
-    const double J = F.col(0).dot(C.col(0));
-    if (!(J > 0.0)) {
-        s.failure[ia] =
-            static_cast<std::uint8_t>(std::isfinite(J) ? Failure::Inverted : Failure::NotFinite);
-        return;
+inline constexpr bool kUpdatesInStrips = std::is_same_v<Model, HypoElastic>;
+
+// Steps 3–4 for the particles of a strip from their θ-gradients
+// (kinematics/deformation_gradient.hpp): F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the
+// force factors. Lanes marked skip are computed and not stored.
+template <class Model, class T>
+[[gnu::always_inline]] inline void advanceStrip(const Model& model, KinematicsStep& s,
+                                                const StripParticles<T>& p,
+                                                const BlockThetaGradients& g) {
+    if constexpr (std::is_arithmetic_v<T>)
+        if (p.skip[0]) return;
+    const StripMat3<T> G = p.of(s.G);
+    const StripMat3<T> Fn = p.of(s.state.F.data());
+    StripMat3<T> Fdot = p.of(g.v) * G.transpose();
+    StripMat3<T> F = p.of(g.x) * G.transpose();
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) F(r, c) = F(r, c) + s.outOfPlane(r, c);
+    for (int j = 0; j < p.kWidth; ++j) {
+        const std::size_t ia = p.index[j];
+        if (s.axisymmetric) {
+            setLane(Fdot(2, 2), j, hoopStretchRate(s.ref.X[ia], s.state.v[ia]));
+            setLane(F(2, 2), j, hoopStretch(s.ref.X[ia], s.state.x[ia]));
+        }
+        // A particle that lost bonds in a body whose bonds break by damage integrates F in
+        // time (failure/brittle_bonds.hpp, integratesF): F over the surviving bonds would jump.
+        if (s.bonds.integratesF(static_cast<Index>(ia)))
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c)
+                    setLane(F(r, c), j, laneOf(Fn(r, c), j) + s.dt * laneOf(Fdot(r, c), j));
     }
-    point.density = model.elastic().density / J;
-    const Mat3 N = s.ref.quadVolume[ia] * C * s.G[ia];
-    s.factors.N.set(ia, N);
-    s.factors.K.set(ia, point.cauchy * N);
-    s.factors.density[ia] = point.density;
-    s.factors.soundSpeed[ia] = model.waveSpeed(point);
-    s.fields.F.set(ia, F);
-    // A particle whose surviving bonds raise its G stiffens its pair forces as ‖G‖²
-    // (failure/brittle_bonds.hpp, stepFactor).
-    s.lengthScale[ia] =
-        s.ref.spacing[ia] * smallestStretchBound(C, J) * s.bonds.stepFactor(static_cast<Index>(ia));
-    s.failure[ia] =
-        static_cast<std::uint8_t>(point.cauchy.allFinite() ? Failure::None : Failure::NotFinite);
+    const StripMat3<T> L = Fdot * inverse(0.5 * (Fn + F));
+    const StripMat3<T> D = 0.5 * (L + L.transpose());
+    const StripMat3<T> W = 0.5 * (L - L.transpose());
+    StripMat3<T> cauchy = p.of(s.state.cauchy.data());
+    MaterialPoint point;
+    if constexpr (kUpdatesInStrips<Model>) {
+        cauchy = jaumannElasticUpdate(model.elastic(), cauchy, D, W, s.dt);
+    } else {
+        static_assert(std::is_arithmetic_v<T>, "a model with history updates one particle");
+        const std::size_t ia = p.index[0];
+        point.cauchy = eigenOf(cauchy);
+        point.density = model.elastic().density / determinant(F);
+        if constexpr (kHasHistory<Model>) {
+            loadHistory<Model>(s.state, ia, point);
+            if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
+            point.size = s.ref.spacing[ia];
+        }
+        model.update(point, eigenOf(D), eigenOf(W), s.dt);
+        cauchy = stripOf(point.cauchy);
+        if constexpr (kHasHistory<Model>) {
+            storeHistory<Model>(point, ia, s.state);
+            // Per current volume → per particle: V J (the particle's current volume).
+            const double volume = s.ref.quadVolume[ia] * determinant(F);
+            s.state.plasticWork[ia] += volume * point.plasticWork;
+            s.damageDissipation[ia] = volume * point.damageDissipation;
+        }
+    }
+    for (int j = 0; j < p.kWidth; ++j) {
+        if (p.skip[j]) continue;
+        s.state.F[p.index[j]] = laneOf(F, j);
+        s.state.cauchy[p.index[j]] = laneOf(cauchy, j);
+    }
+    storeFactors(model, s, p, F, cauchy, L.trace(), &point);
+    for (int j = 0; j < p.kWidth; ++j)
+        if (!p.skip[j])
+            storeHourglassScale(model, s, p.index[j], s.state.cauchy[p.index[j]],
+                                point.plasticStrain);
 }
 
-// Steps 3–4 for particle a from its θ-gradients of x and v (kinematics/deformation_gradient.hpp):
-// F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the force factors.
+// The block's particles strip by strip (strip type T).
+template <class Model, class T>
+[[gnu::always_inline]] inline void advanceBlockStrips(const Model& model, KinematicsStep& s,
+                                                      const ParticleBlock& block,
+                                                      const BlockThetaGradients& g) {
+    constexpr int width = kLanesOf<T>;
+    for (Index i0 = 0; i0 < block.size(); i0 += width) {
+        const StripParticles<T> p(
+            block, i0, static_cast<int>(std::min<Index>(width, block.size() - i0)), s.bonds);
+        advanceStrip(model, s, p, g);
+    }
+    leaveLanes<T>();
+}
+
+GSPH_AVX512_TARGET void avx512ElasticStrips(const HypoElastic& model, KinematicsStep& s,
+                                            const ParticleBlock& block,
+                                            const BlockThetaGradients& g) {
+    advanceBlockStrips<HypoElastic, Lanes8>(model, s, block, g);
+}
+GSPH_AVX2_TARGET void avx2ElasticStrips(const HypoElastic& model, KinematicsStep& s,
+                                        const ParticleBlock& block, const BlockThetaGradients& g) {
+    advanceBlockStrips<HypoElastic, Lanes4>(model, s, block, g);
+}
+void sse2ElasticStrips(const HypoElastic& model, KinematicsStep& s, const ParticleBlock& block,
+                       const BlockThetaGradients& g) {
+    advanceBlockStrips<HypoElastic, Lanes2>(model, s, block, g);
+}
+
+// Steps 3–4 for every particle of a block but the detached ones: across lanes for a model that
+// updates in strips (the widest the processor has: the same bits at every width), else one
+// particle at a time.
 template <class Model>
-void advanceParticle(const Model& model, KinematicsStep& s, Index a, const Mat3& gradX,
-                     const Mat3& gradV) {
-    const auto ia = static_cast<std::size_t>(a);
-    const Mat3& G = s.G[ia];
-    Mat3 Fdot = gradV * G.transpose();
-    if (s.axisymmetric) Fdot(2, 2) = hoopStretchRate(s.ref.X[ia], s.state.v[ia]);
-    // A particle that lost bonds in a body whose bonds break by damage integrates F in time
-    // (failure/brittle_bonds.hpp, integratesF): F over the surviving bonds would jump.
-    const bool integrated = s.bonds.integratesF(a);
-    Mat3 F =
-        integrated ? Mat3(s.state.F[ia] + s.dt * Fdot) : Mat3(gradX * G.transpose() + s.outOfPlane);
-    if (s.axisymmetric && !integrated) F(2, 2) = hoopStretch(s.ref.X[ia], s.state.x[ia]);
-    const Mat3 L = Fdot * (0.5 * (s.state.F[ia] + F)).inverse();
-    MaterialPoint point;
-    point.cauchy = s.state.cauchy[ia];
-    const double J = F.determinant();
-    point.density = model.elastic().density / J;
-    if constexpr (kHasHistory<Model>) {
-        loadHistory<Model>(s.state, ia, point);
-        if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
-        point.size = s.ref.spacing[ia];
+void advanceBlock(const Model& model, KinematicsStep& s, const ParticleBlock& block,
+                  const BlockThetaGradients& g) {
+    if constexpr (kUpdatesInStrips<Model>) {
+        switch (laneWidth()) {
+            case 8:
+                avx512ElasticStrips(model, s, block, g);
+                return;
+            case 4:
+                avx2ElasticStrips(model, s, block, g);
+                return;
+            default:
+                sse2ElasticStrips(model, s, block, g);
+                return;
+        }
+    } else {
+        advanceBlockStrips<Model, double>(model, s, block, g);
     }
-    model.update(point, 0.5 * (L + L.transpose()), 0.5 * (L - L.transpose()), s.dt);
-    s.state.F[ia] = F;
-    s.state.cauchy[ia] = point.cauchy;
-    if constexpr (kHasHistory<Model>) {
-        storeHistory<Model>(point, ia, s.state);
-        // Per current volume → per particle: V J (the particle's current volume).
-        const double volume = s.ref.quadVolume[ia] * J;
-        s.state.plasticWork[ia] += volume * point.plasticWork;
-        s.damageDissipation[ia] = volume * point.damageDissipation;
-    }
-    storeFactors(model, s, ia, F, point);
-    storeSwitch(s, ia, L.trace());
-    storeHourglassScale(model, s, ia, point.cauchy, point.plasticStrain);
 }
 
 // A detached particle (failure/brittle_bonds.hpp) keeps its last F and carries no stress; it
@@ -154,7 +369,8 @@ void detachParticle(const Model& model, KinematicsStep& s, std::size_t ia) {
     s.factors.density[ia] = point.density;
     s.factors.soundSpeed[ia] = model.waveSpeed(point);
     s.fields.F.set(ia, s.state.F[ia]);
-    storeSwitch(s, ia, 0.0);
+    s.factors.viscositySwitch[ia] =
+        viscositySwitch(s.viscosity, s.ref.smoothingLength[ia], 0.0, s.factors.soundSpeed[ia]);
     storeHourglassScale(model, s, ia, point.cauchy, point.plasticStrain);
     s.lengthScale[ia] = s.ref.spacing[ia];
     s.failure[ia] = 0;
@@ -175,8 +391,8 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
             }
             MaterialPoint point;
             point.cauchy = s.state.cauchy[ia];
-            storeFactors(model, s, ia, s.state.F[ia], point);
-            storeSwitch(s, ia, 0.0);
+            storeFactors(model, s, StripParticles<double>(block, i, 1, s.bonds),
+                         stripOf(s.state.F[ia]), stripOf(point.cauchy), 0.0, &point);
             // A restart resumes with the scale its plastic strain gives.
             if (!s.state.plasticStrain.empty())
                 storeHourglassScale(model, s, ia, point.cauchy, s.state.plasticStrain[ia]);
@@ -185,19 +401,14 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
         BlockThetaGradients g;
         stencilThetaGradients(blocks.stencils[static_cast<std::size_t>(block.stencil)], block,
                               s.fields.x, s.fields.v, g);
-        for (Index i = 0; i < block.size(); ++i)
-            advanceParticle(model, s, block.particle(i), g.gradX(i), g.gradV(i));
+        advanceBlock(model, s, block, g);
     } else {
         BlockThetaGradients g;
         csrThetaGradients(s.ref, &staged, bonds, block, s.fields.x, s.fields.v, g);
-        for (Index i = 0; i < block.size(); ++i) {
-            const Index a = block.particle(i);
-            if (s.bonds.detached(a)) {
-                detachParticle(model, s, static_cast<std::size_t>(a));
-                continue;
-            }
-            advanceParticle(model, s, a, g.gradX(i), g.gradV(i));
-        }
+        advanceBlock(model, s, block, g);
+        for (Index i = 0; i < block.size(); ++i)
+            if (s.bonds.detached(block.particle(i)))
+                detachParticle(model, s, static_cast<std::size_t>(block.particle(i)));
     }
 }
 

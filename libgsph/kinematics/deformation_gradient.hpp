@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "core/soa_field.hpp"
+#include "core/strip_mat3.hpp"
 #include "neighbors/staged_pairs.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
@@ -30,11 +31,7 @@ namespace gsph {
 /// factors and Nanson's formula need J F^{-T} only, so taking it directly saves the inverse and
 /// its division.
 inline Mat3 cofactor(const Mat3& F) {
-    Mat3 C;
-    C.col(0) = F.col(1).cross(F.col(2));
-    C.col(1) = F.col(2).cross(F.col(0));
-    C.col(2) = F.col(0).cross(F.col(1));
-    return C;
+    return eigenOf(cofactor(stripOf(F)));
 }
 
 /// Accumulates the θ-gradients Σ_b ω (x_b − x_a) ⊗ ∇W_ab and the same of v at particle a (the

@@ -14,8 +14,7 @@
 
 #include <array>
 
-#include <Eigen/LU>
-
+#include "core/strip_mat3.hpp"
 #include "core/types.hpp"
 #include "materials/elastic_constants.hpp"
 #include "materials/material_point.hpp"
@@ -23,21 +22,42 @@
 namespace gsph {
 
 /// The rotation R = (I − ½ΔtW)^{-1}(I + ½ΔtW) of the incrementally objective Jaumann update
-/// (Hughes & Winget 1980); exactly orthogonal for any Δt.
+/// (Hughes & Winget 1980); exactly orthogonal for any Δt. T: double or a strip type
+/// (core/strip_mat3.hpp), the same bits in every lane.
+template <class T>
+[[gnu::always_inline]] inline StripMat3<T> jaumannRotation(const StripMat3<T>& W, double dt) {
+    const StripMat3<T> halfSpin = (0.5 * dt) * W;
+    const StripMat3<T> identity = StripMat3<T>::identity();
+    return inverse(identity - halfSpin) * (identity + halfSpin);
+}
 inline Mat3 jaumannRotation(const Mat3& W, double dt) {
-    const Mat3 halfSpin = 0.5 * dt * W;
-    return (Mat3::Identity() - halfSpin).inverse() * (Mat3::Identity() + halfSpin);
+    return eigenOf(jaumannRotation(stripOf(W), dt));
 }
 
 /// The elastic trial stress of every model, Jaumann rate integrated incrementally objectively
 /// (Hughes & Winget 1980): σ_{n+1} = R σ_n R^T + Δt C : D, R = jaumannRotation(W, Δt).
 /// R is exactly orthogonal, so a rigid spin leaves the invariants of σ unchanged to
 /// round-off; to first order in Δt this is σ_n + Δt (C : D + W σ − σ W).
+template <class T>
+[[gnu::always_inline]] inline StripMat3<T> jaumannElasticUpdate(const ElasticConstants& e,
+                                                                const StripMat3<T>& sigma,
+                                                                const StripMat3<T>& D,
+                                                                const StripMat3<T>& W, double dt) {
+    const StripMat3<T> R = jaumannRotation(W, dt);
+    const StripMat3<T> rotated = R * sigma * R.transpose();
+    const T volumetric = e.lame() * D.trace();
+    const double twiceShear = 2.0 * e.shearModulus();
+    StripMat3<T> next;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            const T rate = r == c ? volumetric + twiceShear * D(r, c) : twiceShear * D(r, c);
+            next(r, c) = rotated(r, c) + dt * rate;
+        }
+    return next;
+}
 inline Mat3 jaumannElasticUpdate(const ElasticConstants& e, const Mat3& sigma, const Mat3& D,
                                  const Mat3& W, double dt) {
-    const Mat3 R = jaumannRotation(W, dt);
-    const Mat3 elasticRate = e.lame() * D.trace() * Mat3::Identity() + 2.0 * e.shearModulus() * D;
-    return R * sigma * R.transpose() + dt * elasticRate;
+    return eigenOf(jaumannElasticUpdate(e, stripOf(sigma), stripOf(D), stripOf(W), dt));
 }
 
 class HypoElastic {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+
 #include <cmath>
 
 #include "core/error.hpp"

@@ -6,6 +6,8 @@
 // which takes the solver's own update path.
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+
 #include <cmath>
 
 #include "core/error.hpp"
