@@ -106,16 +106,17 @@ void PenaltyContact::markDamaged(const std::vector<std::uint8_t>& bondIntact) {
     const PairList& P = ref_->pairs;
     anyDamaged_ = false;
     if (!selfContact_ || bondIntact.empty()) return;
-    // Each particle from its own bonds; split, every process's particles from their owners
-    // (a pair of one body may join any two particles the motion brings together).
+    // Each particle from its own bonds; split, the flags of the other processes' particles
+    // come with their positions (markCandidates).
     parallelFor(owned_, [&](Index a) {
         std::uint8_t lost = 0;
         for (Index k = P.begin(a); k < P.end(a) && !lost; ++k)
             lost = bondIntact[static_cast<std::size_t>(k)] == 0;
         damaged_[static_cast<std::size_t>(a)] = lost;
     });
-    if (domain_ != nullptr && domain_->processes() > 1) domain_->shareAll(damaged_);
-    anyDamaged_ = std::any_of(damaged_.begin(), damaged_.end(), [](std::uint8_t d) { return d; });
+    anyDamaged_ = std::any_of(damaged_.begin() + owned_.begin, damaged_.begin() + owned_.end,
+                              [](std::uint8_t d) { return d; });
+    if (split()) anyDamaged_ = domain_->any(anyDamaged_);
 }
 
 // The pair (a, b) of a's list, or −1 if b is not a's neighbour (a's list is sorted).
@@ -151,13 +152,16 @@ void PenaltyContact::recordSeparations(const std::vector<Vec3>& x,
 // grown by the largest contact distance (a pair in contact lies within that reach of each
 // other, so both ends pass); with self-contact also those inside the box of their own body's
 // damaged particles grown alike. Keeps the search to the contact zone (the interior of a plate
-// far from the projectile costs a box test, not 27 cells).
-void PenaltyContact::markCandidates(const std::vector<Vec3>& x) {
-    const Reference& ref = *ref_;
+// far from the projectile costs a box test, not 27 cells). Split, each process bounds its own
+// particles and the boxes are the processes' exact minima and maxima; each marks its own
+// candidates and gets the others' positions (and lost-bond flags): every process then searches
+// the serial run's candidates, in the same order. Returns the positions the search reads.
+const std::vector<Vec3>& PenaltyContact::markCandidates(const std::vector<Vec3>& x) {
     const Vec3 big = Vec3::Constant(std::numeric_limits<double>::infinity());
     for (std::size_t b = 0; b < ranges_.size(); ++b) {
         Vec3 lo = big, hi = -big, damagedLo = big, damagedHi = -big;
-        for (Index a = ranges_[b].first; a < ranges_[b].second; ++a) {
+        const ParticleRange mine = owned_.within(ranges_[b].first, ranges_[b].second);
+        for (Index a = mine.begin; a < mine.end; ++a) {
             const Vec3& xa = x[static_cast<std::size_t>(a)];
             if (!xa.allFinite()) continue;
             lo = lo.cwiseMin(xa);
@@ -167,15 +171,40 @@ void PenaltyContact::markCandidates(const std::vector<Vec3>& x) {
                 damagedHi = damagedHi.cwiseMax(xa);
             }
         }
-        boxLow_[b] = lo.array() - cellSize_;
-        boxHigh_[b] = hi.array() + cellSize_;
-        damagedLow_[b] = damagedLo.array() - cellSize_;
-        damagedHigh_[b] = damagedHi.array() + cellSize_;
+        boxLow_[b] = lo;
+        boxHigh_[b] = hi;
+        damagedLow_[b] = damagedLo;
+        damagedHigh_[b] = damagedHi;
+    }
+    if (split()) {
+        // Maxima as minima of the negatives (exact).
+        bounds_.clear();
+        for (std::size_t b = 0; b < ranges_.size(); ++b)
+            for (int d = 0; d < 3; ++d) {
+                bounds_.push_back(boxLow_[b][d]);
+                bounds_.push_back(-boxHigh_[b][d]);
+                bounds_.push_back(damagedLow_[b][d]);
+                bounds_.push_back(-damagedHigh_[b][d]);
+            }
+        domain_->minimum(bounds_);
+        for (std::size_t b = 0, k = 0; b < ranges_.size(); ++b)
+            for (int d = 0; d < 3; ++d) {
+                boxLow_[b][d] = bounds_[k++];
+                boxHigh_[b][d] = -bounds_[k++];
+                damagedLow_[b][d] = bounds_[k++];
+                damagedHigh_[b][d] = -bounds_[k++];
+            }
+    }
+    for (std::size_t b = 0; b < ranges_.size(); ++b) {
+        boxLow_[b] = boxLow_[b].array() - cellSize_;
+        boxHigh_[b] = boxHigh_[b].array() + cellSize_;
+        damagedLow_[b] = damagedLow_[b].array() - cellSize_;
+        damagedHigh_[b] = damagedHigh_[b].array() + cellSize_;
     }
     const auto inside = [&](const Vec3& p, const Vec3& lo, const Vec3& hi) {
         return (p.array() >= lo.array()).all() && (p.array() <= hi.array()).all();
     };
-    parallelFor(ref.size(), [&](Index a) {
+    parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         std::uint8_t near = 0;
         for (std::size_t b = 0; b < ranges_.size() && !near; ++b) {
@@ -185,11 +214,23 @@ void PenaltyContact::markCandidates(const std::vector<Vec3>& x) {
         }
         candidate_[ia] = near;
     });
+    if (!split()) return x;
+    for (Index b : received_) candidate_[static_cast<std::size_t>(b)] = 0;
+    listed_.clear();
+    for (Index a = owned_.begin; a < owned_.end; ++a) {
+        const auto ia = static_cast<std::size_t>(a);
+        if (!candidate_[ia]) continue;
+        listed_.push_back(a);
+        positions_[ia] = x[ia];
+    }
+    domain_->shareListed(listed_, positions_, damaged_, received_);
+    for (Index b : received_) candidate_[static_cast<std::size_t>(b)] = 1;
+    return positions_;
 }
 
 // Counting sort of the candidates by bucket (sequential: O(n) and a fixed order).
-void PenaltyContact::build(const std::vector<Vec3>& x) {
-    markCandidates(x);
+const std::vector<Vec3>& PenaltyContact::build(const std::vector<Vec3>& current) {
+    const std::vector<Vec3>& x = markCandidates(current);
     const std::size_t n = x.size(), nowhere = bucketStart_.size() - 2;
     std::fill(bucketStart_.begin(), bucketStart_.end(), 0);
     for (std::size_t a = 0; a < n; ++a) {
@@ -209,16 +250,17 @@ void PenaltyContact::build(const std::vector<Vec3>& x) {
     // The fill advanced each start to the next bucket's start: shift back.
     for (std::size_t b = bucketStart_.size() - 1; b > 0; --b) bucketStart_[b] = bucketStart_[b - 1];
     bucketStart_[0] = 0;
+    return x;
 }
 
-double PenaltyContact::addForces(const std::vector<Vec3>& x, std::vector<Vec3>& force,
+double PenaltyContact::addForces(const std::vector<Vec3>& current, std::vector<Vec3>& force,
                                  std::vector<double>& frequency2,
                                  const std::vector<std::uint8_t>& bondIntact,
                                  const std::vector<double>& separation) {
     pairs_ = 0;
     if (!active_) return 0.0;
     markDamaged(bondIntact);
-    build(x);
+    const std::vector<Vec3>& x = build(current);
     const Reference& ref = *ref_;
     const ContactShapes& shape = shapes_;
     const int zReach = ref.dim.value == 2 ? 0 : 1;

@@ -74,12 +74,13 @@ class PenaltyContact {
 
     bool active() const { return active_; }
     /// The particles whose forces, energy and body totals addForces computes (all of them
-    /// unless set: a process of a split run, distributed/domain.hpp). The search still covers
-    /// every particle, so x must hold every particle's position; with self-contact, which
-    /// particles have lost a bond is shared over `domain` (null: serial).
+    /// unless set: a process of a split run, distributed/domain.hpp). x need hold only their
+    /// positions: each process bounds and lists its own particles near the contact zone and
+    /// the positions and lost-bond flags of the others' come over `domain` (null: serial).
     void restrictTo(ParticleRange owned, Domain* domain = nullptr) {
         owned_ = owned;
         domain_ = domain;
+        if (split() && positions_.size() != candidate_.size()) positions_.resize(candidate_.size());
     }
 
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
@@ -112,9 +113,10 @@ class PenaltyContact {
 
   private:
     using Cell = std::array<std::int64_t, 3>;
+    bool split() const { return domain_ != nullptr && domain_->processes() > 1; }
     void markDamaged(const std::vector<std::uint8_t>& bondIntact);
-    void markCandidates(const std::vector<Vec3>& x);
-    void build(const std::vector<Vec3>& x);
+    const std::vector<Vec3>& markCandidates(const std::vector<Vec3>& x);
+    const std::vector<Vec3>& build(const std::vector<Vec3>& x);
     Index pairOf(Index a, Index b) const;
     std::size_t bucketOf(const Cell& c) const;
 
@@ -145,6 +147,11 @@ class PenaltyContact {
     long pairs_ = 0;
     ParticleRange owned_;
     Domain* domain_ = nullptr;
+    // Split runs: the candidates' positions (this process's and the others'), which of them
+    // this process listed and which it received at the last search, the boxes' bounds.
+    std::vector<Vec3> positions_;
+    std::vector<Index> listed_, received_;
+    std::vector<double> bounds_;
 };
 
 }  // namespace gsph

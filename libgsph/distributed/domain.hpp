@@ -12,7 +12,8 @@
 // neighbours another process owns (its ghosts). Bonds break where their particle is owned; each
 // process then takes its ghosts' rows of the bond flags from their owners (shareGhostRows), so
 // every particle it reads sees its surviving bonds as the serial run does. Contact between bodies
-// searches every particle's current position: shareAll gives each process all of them. The global
+// searches the particles within reach of the contact zone in the current configuration: each
+// process lists its own, and shareListed gives every process the others' positions. The global
 // minimum of Δt is exact; the sums of the energy ledger add the processes' partial sums, so they
 // depend on the split at round-off (the state does not read them). gather gives process 0 every
 // particle's state for the files it writes.
@@ -78,13 +79,19 @@ class Domain {
     /// Overwrites this process's ghosts' rows of a per-pair array (one byte per entry of
     /// ref.pairs, the CSR order of split()'s reference) with their owners' (collective).
     virtual void shareGhostRows(std::span<std::uint8_t> perPair) { (void)perPair; }
-    /// Every process gets every process's entries of a per-particle array (collective): the
-    /// positions a search in the current configuration (contact between bodies) reads.
-    virtual void shareAll(std::vector<Vec3>& perParticle) { (void)perParticle; }
-    /// The same for a per-particle flag (self-contact: which particles have lost a bond).
-    virtual void shareAll(std::vector<std::uint8_t>& perParticle) { (void)perParticle; }
+    /// Every process lists some of its own particles, ascending (`mine`), and gets every other
+    /// process's (collective): x[b], and flags[b] unless flags is empty, for each b another
+    /// process listed, and those b in `received` (process by process, each list as its
+    /// process gave it). The particles a search in the current configuration reads (contact).
+    virtual void shareListed(std::span<const Index> mine, std::vector<Vec3>& x,
+                             std::vector<std::uint8_t>& flags, std::vector<Index>& received) {
+        (void)mine, (void)x, (void)flags;
+        received.clear();
+    }
     /// The minimum over the processes (exact).
     virtual double minimum(double local) { return local; }
+    /// Each value's minimum over the processes (exact).
+    virtual void minimum(std::span<double> values) { (void)values; }
     /// Each value summed over the processes.
     virtual void sum(std::span<double> values) { (void)values; }
     /// True when it is true on some process.

@@ -42,9 +42,6 @@ class MpiDomain final : public Domain {
         outgoing_.resize(peers_.size());
         incoming_.resize(peers_.size());
         requests_.resize(2 * peers_.size());
-        // shareAll, every step.
-        byteRanges(cuts_, sizeof(Vec3), positionCounts_, positionOffsets_);
-        byteRanges(cuts_, 1, flagCounts_, flagOffsets_);
         describeSplit(costsOf(blocks, cuts_));
         const auto r = static_cast<std::size_t>(rank_);
         return {cuts_[r], cuts_[r + 1]};
@@ -110,16 +107,58 @@ class MpiDomain final : public Domain {
             });
     }
 
-    void shareAll(std::vector<Vec3>& perParticle) override {
-        check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), positionCounts_.data(),
-                             positionOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
+    void shareListed(std::span<const Index> mine, std::vector<Vec3>& x,
+                     std::vector<std::uint8_t>& flags, std::vector<Index>& received) override {
+        const auto processes = static_cast<std::size_t>(size_);
+        listedCounts_.resize(processes);
+        listedOffsets_.resize(processes);
+        const int count = static_cast<int>(mine.size());
+        check(MPI_Allgather(&count, 1, MPI_INT, listedCounts_.data(), 1, MPI_INT, MPI_COMM_WORLD),
+              "MPI_Allgather");
+        int total = 0;
+        for (std::size_t r = 0; r < processes; ++r) {
+            listedOffsets_[r] = total;
+            total += listedCounts_[r];
+        }
+        listed_.resize(static_cast<std::size_t>(total));
+        check(MPI_Allgatherv(mine.data(), count, MPI_INT32_T, listed_.data(), listedCounts_.data(),
+                             listedOffsets_.data(), MPI_INT32_T, MPI_COMM_WORLD),
               "MPI_Allgatherv");
-    }
-
-    void shareAll(std::vector<std::uint8_t>& perParticle) override {
-        check(MPI_Allgatherv(MPI_IN_PLACE, 0, MPI_BYTE, perParticle.data(), flagCounts_.data(),
-                             flagOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
+        // Positions (and flags) as bytes, in the lists' order.
+        const std::size_t entry = sizeof(Vec3) + (flags.empty() ? 0 : 1);
+        outgoingListed_.resize(mine.size() * entry);
+        std::uint8_t* out = outgoingListed_.data();
+        for (Index a : mine) {
+            std::memcpy(out, x[static_cast<std::size_t>(a)].data(), sizeof(Vec3));
+            out += sizeof(Vec3);
+            if (!flags.empty()) *out++ = flags[static_cast<std::size_t>(a)];
+        }
+        byteCounts_.resize(processes);
+        byteOffsets_.resize(processes);
+        for (std::size_t r = 0; r < processes; ++r) {
+            byteCounts_[r] = listedCounts_[r] * static_cast<int>(entry);
+            byteOffsets_[r] = listedOffsets_[r] * static_cast<int>(entry);
+        }
+        incomingListed_.resize(static_cast<std::size_t>(total) * entry);
+        check(MPI_Allgatherv(outgoingListed_.data(), static_cast<int>(outgoingListed_.size()),
+                             MPI_BYTE, incomingListed_.data(), byteCounts_.data(),
+                             byteOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
               "MPI_Allgatherv");
+        received.clear();
+        const auto self = static_cast<std::size_t>(rank_);
+        for (std::size_t r = 0; r < processes; ++r) {
+            if (r == self) continue;
+            const auto first = static_cast<std::size_t>(listedOffsets_[r]);
+            const auto last = first + static_cast<std::size_t>(listedCounts_[r]);
+            const std::uint8_t* in = incomingListed_.data() + first * entry;
+            for (std::size_t k = first; k < last; ++k) {
+                const auto b = static_cast<std::size_t>(listed_[k]);
+                std::memcpy(x[b].data(), in, sizeof(Vec3));
+                in += sizeof(Vec3);
+                if (!flags.empty()) flags[b] = *in++;
+                received.push_back(listed_[k]);
+            }
+        }
     }
 
     double minimum(double local) override {
@@ -127,6 +166,12 @@ class MpiDomain final : public Domain {
         check(MPI_Allreduce(&local, &global, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
               "MPI_Allreduce");
         return global;
+    }
+
+    void minimum(std::span<double> values) override {
+        check(MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()),
+                            MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD),
+              "MPI_Allreduce");
     }
 
     void sum(std::span<double> values) override {
@@ -250,8 +295,10 @@ class MpiDomain final : public Domain {
     }
 
     std::string description_;
-    std::vector<int> positionCounts_, positionOffsets_;  ///< byteRanges of a Vec3 array
-    std::vector<int> flagCounts_, flagOffsets_;          ///< byteRanges of a byte array
+    // shareListed's buffers.
+    std::vector<int> listedCounts_, listedOffsets_, byteCounts_, byteOffsets_;
+    std::vector<Index> listed_;
+    std::vector<std::uint8_t> outgoingListed_, incomingListed_;
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
     std::vector<HaloPeer> peers_;

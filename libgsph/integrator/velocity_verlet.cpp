@@ -137,7 +137,6 @@ void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
     channels_.owned = owned_;
     channels_.domain = domain_.get();
     stress_.restrictTo(owned_);
-    sharesAllPositions_ = domain_->processes() > 1 && stage<PairContactStage>() != nullptr;
 }
 
 void VelocityVerlet::shareGhosts(State& state, GhostColumns which) {
@@ -258,7 +257,6 @@ void VelocityVerlet::step(State& state) {
         stress_.pack(state, a);
     });
     shareGhosts(state, GhostColumns::Motion);
-    if (sharesAllPositions_) domain_->shareAll(state.x);
     state.ledger.fractureEnergy +=
         bonds_.breakStretchedBonds(state, owned_, *domain_).releasedEnergy;
     // 3–4: F, Ḟ, σ at t_{n+1} and their dissipation.

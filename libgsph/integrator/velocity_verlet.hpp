@@ -160,8 +160,6 @@ class VelocityVerlet {
     std::shared_ptr<Domain> domain_ = std::make_shared<Domain>();
     ParticleRange owned_;
     std::vector<GhostArray> ghostArrays_;  ///< scratch of shareGhosts
-    /// Split with contact between bodies: every process gets every position after the drift.
-    bool sharesAllPositions_ = false;
 };
 
 }  // namespace gsph
