@@ -683,11 +683,13 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         logEnd(*options.log, summary, sim.energy());
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();
-            char line[200];
+            char line[300];
             std::snprintf(line, sizeof line,
                           "process 0: %.2f s of the steps exchanging ghosts' columns (of %.2f s "
-                          "in the steps)",
-                          t.exchange, t.kinematicsAndStress + t.forces + t.contact + t.other);
+                          "in the steps); %.1f kB of contact positions sent per step",
+                          t.exchange, t.kinematicsAndStress + t.forces + t.contact + t.other,
+                          options.domain->listedBytesSent() / 1e3 /
+                              static_cast<double>(std::max<long>(summary.steps - firstStep, 1)));
             options.log->add(line);
         }
         const BrittleBonds& bonds = sim.integrator().bonds();

@@ -223,7 +223,8 @@ const std::vector<Vec3>& PenaltyContact::markCandidates(const std::vector<Vec3>&
         listed_.push_back(a);
         positions_[ia] = x[ia];
     }
-    domain_->shareListed(listed_, positions_, damaged_, received_);
+    // A pair in contact is closer than the sum of the two largest radii, at most cellSize_.
+    domain_->shareListed(listed_, cellSize_, positions_, damaged_, received_);
     for (Index b : received_) candidate_[static_cast<std::size_t>(b)] = 1;
     return positions_;
 }

@@ -13,7 +13,7 @@
 // process then takes its ghosts' rows of the bond flags from their owners (shareGhostRows), so
 // every particle it reads sees its surviving bonds as the serial run does. Contact between bodies
 // searches the particles within reach of the contact zone in the current configuration: each
-// process lists its own, and shareListed gives every process the others' positions. The global
+// process lists its own, and shareListed brings it the others' within reach. The global
 // minimum of Δt is exact; the sums of the energy ledger add the processes' partial sums, so they
 // depend on the split at round-off (the state does not read them). gather gives process 0 every
 // particle's state for the files it writes.
@@ -79,15 +79,18 @@ class Domain {
     /// Overwrites this process's ghosts' rows of a per-pair array (one byte per entry of
     /// ref.pairs, the CSR order of split()'s reference) with their owners' (collective).
     virtual void shareGhostRows(std::span<std::uint8_t> perPair) { (void)perPair; }
-    /// Every process lists some of its own particles, ascending (`mine`), and gets every other
-    /// process's (collective): x[b], and flags[b] unless flags is empty, for each b another
-    /// process listed, and those b in `received` (process by process, each list as its
-    /// process gave it). The particles a search in the current configuration reads (contact).
-    virtual void shareListed(std::span<const Index> mine, std::vector<Vec3>& x,
+    /// Every process lists some of its own particles, ascending (`mine`), and gets those of
+    /// every other process's that lie within `reach` of the box of its own listed positions
+    /// (collective): x[b], and flags[b] unless flags is empty, for each such b, and those b in
+    /// `received`. The particles a search in the current configuration can meet (contact): a
+    /// listed particle sees every other one within reach.
+    virtual void shareListed(std::span<const Index> mine, double reach, std::vector<Vec3>& x,
                              std::vector<std::uint8_t>& flags, std::vector<Index>& received) {
-        (void)mine, (void)x, (void)flags;
+        (void)mine, (void)reach, (void)x, (void)flags;
         received.clear();
     }
+    /// The bytes this process has sent by shareListed so far.
+    virtual double listedBytesSent() const { return 0.0; }
     /// The minimum over the processes (exact).
     virtual double minimum(double local) { return local; }
     /// Each value's minimum over the processes (exact).

@@ -107,59 +107,79 @@ class MpiDomain final : public Domain {
             });
     }
 
-    void shareListed(std::span<const Index> mine, std::vector<Vec3>& x,
+    void shareListed(std::span<const Index> mine, double reach, std::vector<Vec3>& x,
                      std::vector<std::uint8_t>& flags, std::vector<Index>& received) override {
         const auto processes = static_cast<std::size_t>(size_);
-        listedCounts_.resize(processes);
-        listedOffsets_.resize(processes);
-        const int count = static_cast<int>(mine.size());
-        check(MPI_Allgather(&count, 1, MPI_INT, listedCounts_.data(), 1, MPI_INT, MPI_COMM_WORLD),
-              "MPI_Allgather");
-        int total = 0;
-        for (std::size_t r = 0; r < processes; ++r) {
-            listedOffsets_[r] = total;
-            total += listedCounts_[r];
-        }
-        listed_.resize(static_cast<std::size_t>(total));
-        check(MPI_Allgatherv(mine.data(), count, MPI_INT32_T, listed_.data(), listedCounts_.data(),
-                             listedOffsets_.data(), MPI_INT32_T, MPI_COMM_WORLD),
-              "MPI_Allgatherv");
-        // Positions (and flags) as bytes, in the lists' order.
-        const std::size_t entry = sizeof(Vec3) + (flags.empty() ? 0 : 1);
-        outgoingListed_.resize(mine.size() * entry);
-        std::uint8_t* out = outgoingListed_.data();
-        for (Index a : mine) {
-            std::memcpy(out, x[static_cast<std::size_t>(a)].data(), sizeof(Vec3));
-            out += sizeof(Vec3);
-            if (!flags.empty()) *out++ = flags[static_cast<std::size_t>(a)];
-        }
-        byteCounts_.resize(processes);
-        byteOffsets_.resize(processes);
-        for (std::size_t r = 0; r < processes; ++r) {
-            byteCounts_[r] = listedCounts_[r] * static_cast<int>(entry);
-            byteOffsets_[r] = listedOffsets_[r] * static_cast<int>(entry);
-        }
-        incomingListed_.resize(static_cast<std::size_t>(total) * entry);
-        check(MPI_Allgatherv(outgoingListed_.data(), static_cast<int>(outgoingListed_.size()),
-                             MPI_BYTE, incomingListed_.data(), byteCounts_.data(),
-                             byteOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
-              "MPI_Allgatherv");
-        received.clear();
         const auto self = static_cast<std::size_t>(rank_);
-        for (std::size_t r = 0; r < processes; ++r) {
-            if (r == self) continue;
-            const auto first = static_cast<std::size_t>(listedOffsets_[r]);
-            const auto last = first + static_cast<std::size_t>(listedCounts_[r]);
-            const std::uint8_t* in = incomingListed_.data() + first * entry;
-            for (std::size_t k = first; k < last; ++k) {
-                const auto b = static_cast<std::size_t>(listed_[k]);
-                std::memcpy(x[b].data(), in, sizeof(Vec3));
-                in += sizeof(Vec3);
-                if (!flags.empty()) flags[b] = *in++;
-                received.push_back(listed_[k]);
+        // Every process's box of its listed positions (empty: +inf lower, −inf upper).
+        constexpr double inf = std::numeric_limits<double>::infinity();
+        double box[6] = {inf, inf, inf, -inf, -inf, -inf};
+        for (Index a : mine)
+            for (int d = 0; d < 3; ++d) {
+                const double v = x[static_cast<std::size_t>(a)][d];
+                box[d] = std::min(box[d], v);
+                box[3 + d] = std::max(box[3 + d], v);
             }
+        boxes_.resize(6 * processes);
+        check(MPI_Allgather(box, 6, MPI_DOUBLE, boxes_.data(), 6, MPI_DOUBLE, MPI_COMM_WORLD),
+              "MPI_Allgather");
+        // To each other process, the listed particles within reach of its box: index, position
+        // (and flag), in ascending order.
+        const std::size_t entry = sizeof(Index) + sizeof(Vec3) + (flags.empty() ? 0 : 1);
+        sendCounts_.assign(processes, 0);
+        outgoingListed_.clear();
+        for (std::size_t q = 0; q < processes; ++q) {
+            if (q == self) continue;
+            const double* other = &boxes_[6 * q];
+            const std::size_t start = outgoingListed_.size();
+            for (Index a : mine) {
+                const Vec3& xa = x[static_cast<std::size_t>(a)];
+                bool near = true;
+                for (int d = 0; d < 3 && near; ++d)
+                    near = xa[d] >= other[d] - reach && xa[d] <= other[3 + d] + reach;
+                if (!near) continue;
+                const std::size_t at = outgoingListed_.size();
+                outgoingListed_.resize(at + entry);
+                std::uint8_t* out = outgoingListed_.data() + at;
+                std::memcpy(out, &a, sizeof(Index));
+                std::memcpy(out + sizeof(Index), xa.data(), sizeof(Vec3));
+                if (!flags.empty())
+                    out[sizeof(Index) + sizeof(Vec3)] = flags[static_cast<std::size_t>(a)];
+            }
+            sendCounts_[q] = static_cast<int>(outgoingListed_.size() - start);
         }
+        receiveCounts_.resize(processes);
+        check(MPI_Alltoall(sendCounts_.data(), 1, MPI_INT, receiveCounts_.data(), 1, MPI_INT,
+                           MPI_COMM_WORLD),
+              "MPI_Alltoall");
+        sendOffsets_.resize(processes);
+        receiveOffsets_.resize(processes);
+        int sent = 0, got = 0;
+        for (std::size_t q = 0; q < processes; ++q) {
+            sendOffsets_[q] = sent;
+            receiveOffsets_[q] = got;
+            sent += sendCounts_[q];
+            got += receiveCounts_[q];
+        }
+        incomingListed_.resize(static_cast<std::size_t>(got));
+        check(MPI_Alltoallv(outgoingListed_.data(), sendCounts_.data(), sendOffsets_.data(),
+                            MPI_BYTE, incomingListed_.data(), receiveCounts_.data(),
+                            receiveOffsets_.data(), MPI_BYTE, MPI_COMM_WORLD),
+              "MPI_Alltoallv");
+        received.clear();
+        for (const std::uint8_t* in = incomingListed_.data();
+             in < incomingListed_.data() + incomingListed_.size(); in += entry) {
+            Index b;
+            std::memcpy(&b, in, sizeof(Index));
+            const auto ib = static_cast<std::size_t>(b);
+            std::memcpy(x[ib].data(), in + sizeof(Index), sizeof(Vec3));
+            if (!flags.empty()) flags[ib] = in[sizeof(Index) + sizeof(Vec3)];
+            received.push_back(b);
+        }
+        listedBytes_ += static_cast<double>(sent);
     }
+
+    double listedBytesSent() const override { return listedBytes_; }
 
     double minimum(double local) override {
         double global = local;
@@ -295,10 +315,11 @@ class MpiDomain final : public Domain {
     }
 
     std::string description_;
-    // shareListed's buffers.
-    std::vector<int> listedCounts_, listedOffsets_, byteCounts_, byteOffsets_;
-    std::vector<Index> listed_;
+    // shareListed's buffers, and the bytes it has sent.
+    std::vector<double> boxes_;
+    std::vector<int> sendCounts_, receiveCounts_, sendOffsets_, receiveOffsets_;
     std::vector<std::uint8_t> outgoingListed_, incomingListed_;
+    double listedBytes_ = 0.0;
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
     std::vector<HaloPeer> peers_;
