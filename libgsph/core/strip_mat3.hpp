@@ -105,7 +105,7 @@ template <class T>
     return part(0, 1, 2) - part(1, 0, 2) + part(2, 0, 1);
 }
 
-/// cof F = J F^{-T}: columns F₁×F₂, F₂×F₀, F₀×F₁ (kinematics/deformation_gradient.hpp, cofactor).
+/// cof F = J F^{-T}: columns F₁×F₂, F₂×F₀, F₀×F₁ (F_i: columns of F; Nanson, the force factors).
 template <class T>
 [[gnu::always_inline]] inline StripMat3<T> cofactor(const StripMat3<T>& f) {
     StripMat3<T> c;
