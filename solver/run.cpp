@@ -684,12 +684,14 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();
             char line[300];
+            const Domain::BytesSent sent = options.domain->bytesSent();
+            const double steps = static_cast<double>(std::max<long>(summary.steps - firstStep, 1));
             std::snprintf(line, sizeof line,
                           "process 0: %.2f s of the steps exchanging ghosts' columns (of %.2f s "
-                          "in the steps); %.1f kB of contact positions sent per step",
+                          "in the steps); sent per step: %.1f kB of its particles' columns to "
+                          "others' ghosts, %.1f kB of contact positions",
                           t.exchange, t.kinematicsAndStress + t.forces + t.contact + t.other,
-                          options.domain->listedBytesSent() / 1e3 /
-                              static_cast<double>(std::max<long>(summary.steps - firstStep, 1)));
+                          sent.ghosts / 1e3 / steps, sent.contact / 1e3 / steps);
             options.log->add(line);
         }
         const BrittleBonds& bonds = sim.integrator().bonds();

@@ -89,8 +89,13 @@ class Domain {
         (void)mine, (void)reach, (void)x, (void)flags;
         received.clear();
     }
-    /// The bytes this process has sent by shareListed so far.
-    virtual double listedBytesSent() const { return 0.0; }
+    /// The bytes this process has sent so far: its particles' columns to the processes whose
+    /// ghosts they are (shareGhosts, shareGhostRows), and its contact-zone particles
+    /// (shareListed).
+    struct BytesSent {
+        double ghosts = 0.0, contact = 0.0;
+    };
+    virtual BytesSent bytesSent() const { return {}; }
     /// The minimum over the processes (exact).
     virtual double minimum(double local) { return local; }
     /// Each value's minimum over the processes (exact).

@@ -176,10 +176,10 @@ class MpiDomain final : public Domain {
             if (!flags.empty()) flags[ib] = in[sizeof(Index) + sizeof(Vec3)];
             received.push_back(b);
         }
-        listedBytes_ += static_cast<double>(sent);
+        sent_.contact += static_cast<double>(sent);
     }
 
-    double listedBytesSent() const override { return listedBytes_; }
+    BytesSent bytesSent() const override { return sent_; }
 
     double minimum(double local) override {
         double global = local;
@@ -266,6 +266,7 @@ class MpiDomain final : public Domain {
             std::vector<std::uint8_t>& out = outgoing_[p];
             out.resize(bytes(p, true));
             pack(p, out.data());
+            sent_.ghosts += static_cast<double>(out.size());
             incoming_[p].resize(bytes(p, false));
             for (const std::size_t n : {out.size(), incoming_[p].size()})
                 if (n > static_cast<std::size_t>(std::numeric_limits<int>::max()))
@@ -315,11 +316,11 @@ class MpiDomain final : public Domain {
     }
 
     std::string description_;
-    // shareListed's buffers, and the bytes it has sent.
+    // shareListed's buffers.
     std::vector<double> boxes_;
     std::vector<int> sendCounts_, receiveCounts_, sendOffsets_, receiveOffsets_;
     std::vector<std::uint8_t> outgoingListed_, incomingListed_;
-    double listedBytes_ = 0.0;
+    BytesSent sent_;
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
     std::vector<HaloPeer> peers_;
