@@ -19,8 +19,6 @@
 // M0 = 0 keeps the constant coefficients (α = 1).
 #pragma once
 
-#include <algorithm>
-
 #include "core/lanes.hpp"
 #include "core/strip_mat3.hpp"
 #include "core/types.hpp"

@@ -141,10 +141,16 @@ template <class T>
         v[j] = value;
 }
 
+// Whether a model's update runs across the lanes of a strip: the hypo-elastic one (no history,
+// the Jaumann update alone); the others one particle at a time.
+template <class Model>
+inline constexpr bool kUpdatesInStrips = std::is_same_v<Model, HypoElastic>;
+
 // The factors the force loop reads, from F and σ at t_{n+1} (DESIGN §4):
 // P = J σ F^{-T}; N = V J F^{-T} G = V (cof F) G, K = σ N = V P G; the density ρ0/J, the sound
 // speed, the time step's length and the viscosity's switch from tr L. For the lanes of p not
-// skipped; `points` (T = double) the material point whose sound speed the model gives.
+// skipped; `point`: the material point whose sound speed a model with history gives (the
+// hypo-elastic one's is a constant).
 template <class Model, class T>
 [[gnu::always_inline]] inline void storeFactors(const Model& model, KinematicsStep& s,
                                                 const StripParticles<T>& p, const StripMat3<T>& F,
@@ -156,11 +162,11 @@ template <class Model, class T>
     const StripMat3<T> N = p.of(s.ref.quadVolume) * C * p.of(s.G);
     const StripMat3<T> K = cauchy * N;
     T soundSpeed;
-    if constexpr (std::is_arithmetic_v<T>) {
+    if constexpr (kUpdatesInStrips<Model>) {
+        soundSpeed = T{} + model.waveSpeed(MaterialPoint{});
+    } else {
         point->density = density;
         soundSpeed = model.waveSpeed(*point);
-    } else {
-        soundSpeed = T{} + model.waveSpeed(MaterialPoint{});  // a constant of the model
     }
     const T bound = smallestStretchBound(C, J);
     const T alpha = viscositySwitch(s.viscosity, p.of(s.ref.smoothingLength), trL, soundSpeed);
@@ -223,11 +229,6 @@ void storeHourglassScale(const Model& model, KinematicsStep& s, std::size_t ia, 
             : 1.0;
 }
 
-// Whether a model's update runs across the lanes of a strip: the hypo-elastic one (no history,
-// the Jaumann update alone); the others one particle at a time.
-template <class Model>
-inline constexpr bool kUpdatesInStrips = std::is_same_v<Model, HypoElastic>;
-
 // Steps 3–4 for the particles of a strip from their θ-gradients
 // (kinematics/deformation_gradient.hpp): F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the
 // force factors. Lanes marked skip are computed and not stored.
@@ -266,8 +267,9 @@ template <class Model, class T>
     } else {
         static_assert(std::is_arithmetic_v<T>, "a model with history updates one particle");
         const std::size_t ia = p.index[0];
+        const double J = determinant(F);
         point.cauchy = eigenOf(cauchy);
-        point.density = model.elastic().density / determinant(F);
+        point.density = model.elastic().density / J;
         if constexpr (kHasHistory<Model>) {
             loadHistory<Model>(s.state, ia, point);
             if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
@@ -278,7 +280,7 @@ template <class Model, class T>
         if constexpr (kHasHistory<Model>) {
             storeHistory<Model>(point, ia, s.state);
             // Per current volume → per particle: V J (the particle's current volume).
-            const double volume = s.ref.quadVolume[ia] * determinant(F);
+            const double volume = s.ref.quadVolume[ia] * J;
             s.state.plasticWork[ia] += volume * point.plasticWork;
             s.damageDissipation[ia] = volume * point.damageDissipation;
         }
