@@ -41,8 +41,10 @@ Line(4) = {1, 4};  // x = 0: the axis
 Curve Loop(1) = {1, 2, -3, -4};
 Plane Surface(1) = {1};
 
-Transfinite Curve{1, 3} = cells_r + 1 Using Progression lip;  // from the axis outwards
-Transfinite Curve{2, 4} = cells_z + 1 Using Progression grading;  // from the impact face up
+// Refined, the same layout with every cell `refine` times smaller: the ratios of successive
+// cells become their refine-th roots, as in taylor_bar.geo.
+Transfinite Curve{1, 3} = cells_r + 1 Using Progression lip^(1 / refine);  // from the axis outwards
+Transfinite Curve{2, 4} = cells_z + 1 Using Progression grading^(1 / refine);  // from the impact face up
 Transfinite Surface{1};
 Recombine Surface{1};
 

@@ -157,6 +157,18 @@ TEST(Preproc2d, TaylorBarAxisymmetricRefines) {
     EXPECT_EQ(c.particles.spaces[0].cells, (Int3{16, 107, 1}));
 }
 
+// Refined, a graded section keeps its layout: every cell `refine` times smaller, the ratio of
+// successive cells its refine-th root (as taylor_bar.geo refines).
+TEST(Preproc2d, TaylorBarAxisymmetricRefinesItsGrading) {
+    const Conversion c = convert(geometry("taylor_bar_axisymmetric.geo"), {},
+                                 {{"nr", 6}, {"nz", 30}, {"grading", 1.08}, {"refine", 2}});
+    const ParticleFile& f = c.particles;
+    ASSERT_EQ(f.spaces[0].cells, (Int3{12, 60, 1}));
+    // The cells next to the axis, first and last along it (areas: lip 1, equal widths).
+    const double first = f.volume[0], last = f.volume[12 * 59];
+    EXPECT_NEAR(last / first, std::pow(1.08, 59.0 / 2.0), 1e-7 * std::pow(1.08, 29.5));
+}
+
 TEST(Preproc2d, GradedPlate) {
     const double W = 0.04, H = 0.02;
     const Conversion c = convert(geometry("plate_2d.geo"));
