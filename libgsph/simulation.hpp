@@ -52,8 +52,8 @@ class Simulation {
     void addStage(std::shared_ptr<ForceStage> stage);
     /// Splits the run over processes (distributed/domain.hpp; before the first step): this
     /// process advances its own particles, and state() holds the others' only after
-    /// gatherState(), on the process that writes the files. Throws InputError when the run
-    /// cannot be split yet (VelocityVerlet::setDomain).
+    /// gatherState(), on the process that writes the files. Throws InputError when the blocks
+    /// leave some process no particles (VelocityVerlet::setDomain).
     void setDomain(std::shared_ptr<Domain> domain);
     /// Collective: the process that writes the files gets every particle's state (nothing to do
     /// in a serial run).

@@ -13,10 +13,12 @@
 // process then takes its ghosts' rows of the bond flags from their owners (shareGhostRows), so
 // every particle it reads sees its surviving bonds as the serial run does. Contact between bodies
 // searches the particles within reach of the contact zone in the current configuration: each
-// process lists its own, and shareListed brings it the others' within reach. The global
-// minimum of Δt is exact; the sums of the energy ledger add the processes' partial sums, so they
-// depend on the split at round-off (the state does not read them). gather gives process 0 every
-// particle's state for the files it writes.
+// process lists its own, and shareListed brings it the others' within reach. A nonlocal damage
+// averages its driver over a material length, beyond the pairs: the driver has a halo of its
+// own (addHalo), exchanged before the average. The global minimum of Δt is exact; the sums of
+// the energy ledger add the processes' partial sums, so they depend on the split at round-off
+// (the state does not read them). gather gives process 0 every particle's state for the files
+// it writes.
 //
 // This base class is the serial run: one process owning every particle, nothing to exchange.
 #pragma once
@@ -28,14 +30,16 @@
 #include <vector>
 
 #include "core/parallel.hpp"
+#include "distributed/halo_plan.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
 #include "particles/state.hpp"
 
 namespace gsph {
 
-/// The points of a step where neighbours' entries are read (tags of the exchanges).
-enum class GhostColumns { Motion = 1, ForceFactors = 2, BondRows = 3 };
+/// The points of a step where neighbours' entries are read (tags of the exchanges). The
+/// damage driver's readers are the nonlocal average's (addHalo), not the pairs'.
+enum class GhostColumns { Motion = 1, ForceFactors = 2, BondRows = 3, DamageDriver = 4 };
 
 /// A per-particle array whose ghosts' entries an exchange overwrites: entry a occupies
 /// `entryBytes` bytes at data + a·entryBytes (a column of doubles, or an array of Vec3, Mat3).
@@ -73,6 +77,11 @@ class Domain {
     virtual void shareGhosts(GhostColumns which, std::span<const GhostArray> arrays) {
         (void)which;
         (void)arrays;
+    }
+    /// Gives the exchanges tagged `which` a halo of their own, planned from `reads` instead of
+    /// the pairs (after split(); collective). `what` names the readers in describe().
+    virtual void addHalo(GhostColumns which, const Reads& reads, const std::string& what) {
+        (void)which, (void)reads, (void)what;
     }
     /// This process's ghosts, ascending (after split(); empty when serial).
     virtual std::span<const Index> ghosts() const { return {}; }

@@ -10,19 +10,13 @@ namespace gsph {
 namespace {
 
 // The particles outside [lo, hi) that the particles of [lo, hi) read, ascending.
-std::vector<Index> readsOutside(const Reference& ref, Index lo, Index hi) {
-    const PairList& P = ref.pairs;
-    std::vector<Index> out;
-    const auto outside = [&](Index b) {
-        if (b < lo || b >= hi) out.push_back(b);
-    };
+std::vector<Index> readsOutside(const Reads& reads, Index lo, Index hi) {
+    std::vector<Index> read, out;
     for (Index a = lo; a < hi; ++a) {
-        for (Index k = P.begin(a); k < P.end(a); ++k)
-            outside(P.neighbor[static_cast<std::size_t>(k)]);
-        if (!ref.crossOffset.empty())
-            for (Index k = ref.crossOffset[static_cast<std::size_t>(a)];
-                 k < ref.crossOffset[static_cast<std::size_t>(a) + 1]; ++k)
-                outside(ref.crossOwner[static_cast<std::size_t>(k)]);
+        read.clear();
+        reads(a, read);
+        for (Index b : read)
+            if (b < lo || b >= hi) out.push_back(b);
     }
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
@@ -108,17 +102,29 @@ std::vector<std::ptrdiff_t> costsOf(const std::vector<StencilBlocks>& bodies,
     return costs;
 }
 
-std::vector<HaloPeer> planHalo(const Reference& ref, const std::vector<Index>& cuts, int process) {
+Reads pairReads(const Reference& ref) {
+    return [&ref](Index a, std::vector<Index>& out) {
+        const PairList& P = ref.pairs;
+        for (Index k = P.begin(a); k < P.end(a); ++k)
+            out.push_back(P.neighbor[static_cast<std::size_t>(k)]);
+        if (!ref.crossOffset.empty())
+            for (Index k = ref.crossOffset[static_cast<std::size_t>(a)];
+                 k < ref.crossOffset[static_cast<std::size_t>(a) + 1]; ++k)
+                out.push_back(ref.crossOwner[static_cast<std::size_t>(k)]);
+    };
+}
+
+std::vector<HaloPeer> planHalo(const Reads& reads, const std::vector<Index>& cuts, int process) {
     const auto me = static_cast<std::size_t>(process);
     const Index lo = cuts[me], hi = cuts[me + 1];
-    const std::vector<Index> mine = readsOutside(ref, lo, hi);
+    const std::vector<Index> mine = readsOutside(reads, lo, hi);
     std::vector<HaloPeer> peers;
     for (std::size_t q = 0; q + 1 < cuts.size(); ++q) {
         if (q == me) continue;
         HaloPeer peer;
         peer.process = static_cast<int>(q);
         peer.receive = within(mine, cuts[q], cuts[q + 1]);
-        peer.send = within(readsOutside(ref, cuts[q], cuts[q + 1]), lo, hi);
+        peer.send = within(readsOutside(reads, cuts[q], cuts[q + 1]), lo, hi);
         if (!peer.send.empty() || !peer.receive.empty()) peers.push_back(std::move(peer));
     }
     return peers;

@@ -10,11 +10,13 @@
 // space, lattice row by row, so a range is a set of slabs of the bodies' lattices. Ghosts: every
 // particle another process owns that one of this process's particles reads in a step: its
 // pairs' neighbours (Reference::pairs) and the particles whose transposed cross-space pairs it
-// sums (Reference::crossOwner). Computed once, in the reference configuration, by every process
-// for every other (each holds the whole reference): no message is needed to agree on who sends
-// what.
+// sums (Reference::crossOwner); a read beyond the pairs (the nonlocal damage's average over a
+// material length) gets a halo of its own, planned alike from its own relation. Computed once,
+// in the reference configuration, by every process for every other (each holds the whole
+// reference): no message is needed to agree on who sends what.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "neighbors/stencil_blocks.hpp"
@@ -40,7 +42,15 @@ struct HaloPeer {
     std::vector<Index> send, receive;
 };
 
-/// The peers of `process` (those it exchanges anything with), ascending.
-std::vector<HaloPeer> planHalo(const Reference& ref, const std::vector<Index>& cuts, int process);
+/// What particle a reads in a step, appended to `out` (any order, repeats allowed).
+using Reads = std::function<void(Index a, std::vector<Index>& out)>;
+
+/// What a particle reads through the reference's pairs: its pairs' neighbours and the owners of
+/// the transposed cross-space pairs it sums.
+Reads pairReads(const Reference& ref);
+
+/// The peers of `process` (those it exchanges anything with), ascending, when every particle
+/// reads what `reads` says.
+std::vector<HaloPeer> planHalo(const Reads& reads, const std::vector<Index>& cuts, int process);
 
 }  // namespace gsph

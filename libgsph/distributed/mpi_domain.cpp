@@ -31,7 +31,8 @@ class MpiDomain final : public Domain {
     ParticleRange split(const Reference& ref, const std::vector<StencilBlocks>& blocks,
                         bool cutStrided) override {
         cuts_ = cutByCost(blocks, ref.size(), size_, cutStrided);
-        peers_ = planHalo(ref, cuts_, rank_);
+        peers_ = planHalo(pairReads(ref), cuts_, rank_);
+        halos_.clear();
         pairs_ = &ref.pairs;
         ghosts_.clear();
         for (const HaloPeer& peer : peers_)  // peers ascending, each one's range after the last's
@@ -39,9 +40,6 @@ class MpiDomain final : public Domain {
         pairCuts_.clear();
         for (Index c : cuts_)
             pairCuts_.push_back(c < ref.size() ? ref.pairs.begin(c) : ref.pairs.pairs());
-        outgoing_.resize(peers_.size());
-        incoming_.resize(peers_.size());
-        requests_.resize(2 * peers_.size());
         describeSplit(costsOf(blocks, cuts_));
         const auto r = static_cast<std::size_t>(rank_);
         return {cuts_[r], cuts_[r + 1]};
@@ -50,18 +48,19 @@ class MpiDomain final : public Domain {
     bool writesFiles() const override { return rank_ == 0; }
 
     void shareGhosts(GhostColumns which, std::span<const GhostArray> arrays) override {
+        const std::vector<HaloPeer>& peers = peersOf(which);
         std::size_t entry = 0;
         for (const GhostArray& array : arrays) entry += array.entryBytes;
         exchange(
-            which,
+            which, peers,
             [&](std::size_t p, bool sending) {
-                const HaloPeer& peer = peers_[p];
+                const HaloPeer& peer = peers[p];
                 return (sending ? peer.send.size() : peer.receive.size()) * entry;
             },
             [&](std::size_t p, std::uint8_t* out) {
                 for (const GhostArray& array : arrays) {
                     const auto* data = static_cast<const std::uint8_t*>(array.data);
-                    for (Index a : peers_[p].send) {
+                    for (Index a : peers[p].send) {
                         std::memcpy(out, data + static_cast<std::size_t>(a) * array.entryBytes,
                                     array.entryBytes);
                         out += array.entryBytes;
@@ -71,13 +70,25 @@ class MpiDomain final : public Domain {
             [&](std::size_t p, const std::uint8_t* in) {
                 for (const GhostArray& array : arrays) {
                     auto* data = static_cast<std::uint8_t*>(array.data);
-                    for (Index a : peers_[p].receive) {
+                    for (Index a : peers[p].receive) {
                         std::memcpy(data + static_cast<std::size_t>(a) * array.entryBytes, in,
                                     array.entryBytes);
                         in += array.entryBytes;
                     }
                 }
             });
+    }
+
+    void addHalo(GhostColumns which, const Reads& reads, const std::string& what) override {
+        halos_.push_back({which, planHalo(reads, cuts_, rank_)});
+        long mine = 0;
+        for (const HaloPeer& peer : halos_.back().peers)
+            mine += static_cast<long>(peer.receive.size());
+        long total = 0, most = 0;
+        check(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+        check(MPI_Allreduce(&mine, &most, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+        description_ += "; " + what + ": " + std::to_string(total) +
+                        " ghosts of its own (at most " + std::to_string(most) + " on one)";
     }
 
     std::span<const Index> ghosts() const override { return ghosts_; }
@@ -90,7 +101,7 @@ class MpiDomain final : public Domain {
             return n;
         };
         exchange(
-            GhostColumns::BondRows,
+            GhostColumns::BondRows, peers_,
             [&](std::size_t p, bool sending) {
                 return rows(sending ? peers_[p].send : peers_[p].receive);
             },
@@ -260,9 +271,15 @@ class MpiDomain final : public Domain {
     // One message to and from every peer, all at once: `bytes(p, sending)` their sizes,
     // `pack(p, out)` fills the one to peer p, `unpack(p, in)` reads the one from it.
     template <class Bytes, class Pack, class Unpack>
-    void exchange(GhostColumns which, Bytes&& bytes, Pack&& pack, Unpack&& unpack) {
+    void exchange(GhostColumns which, const std::vector<HaloPeer>& peers, Bytes&& bytes,
+                  Pack&& pack, Unpack&& unpack) {
         const int tag = static_cast<int>(which);
-        for (std::size_t p = 0; p < peers_.size(); ++p) {
+        if (outgoing_.size() < peers.size()) {
+            outgoing_.resize(peers.size());
+            incoming_.resize(peers.size());
+        }
+        requests_.resize(2 * peers.size());
+        for (std::size_t p = 0; p < peers.size(); ++p) {
             std::vector<std::uint8_t>& out = outgoing_[p];
             out.resize(bytes(p, true));
             pack(p, out.data());
@@ -274,16 +291,23 @@ class MpiDomain final : public Domain {
                         "a split run's ghost exchange exceeds 2 GB per message: "
                         "run on more processes");
             check(MPI_Irecv(incoming_[p].data(), static_cast<int>(incoming_[p].size()), MPI_BYTE,
-                            peers_[p].process, tag, MPI_COMM_WORLD, &requests_[2 * p]),
+                            peers[p].process, tag, MPI_COMM_WORLD, &requests_[2 * p]),
                   "MPI_Irecv");
-            check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_BYTE, peers_[p].process,
+            check(MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_BYTE, peers[p].process,
                             tag, MPI_COMM_WORLD, &requests_[2 * p + 1]),
                   "MPI_Isend");
         }
         check(
             MPI_Waitall(static_cast<int>(requests_.size()), requests_.data(), MPI_STATUSES_IGNORE),
             "MPI_Waitall");
-        for (std::size_t p = 0; p < peers_.size(); ++p) unpack(p, incoming_[p].data());
+        for (std::size_t p = 0; p < peers.size(); ++p) unpack(p, incoming_[p].data());
+    }
+
+    // The peers of the exchanges tagged `which`: a halo of their own (addHalo), or the pairs'.
+    const std::vector<HaloPeer>& peersOf(GhostColumns which) const {
+        for (const Halo& halo : halos_)
+            if (halo.which == which) return halo.peers;
+        return peers_;
     }
 
     // Ghosts over all processes and the most on one, and the bytes a step exchanges: per ghost,
@@ -323,7 +347,12 @@ class MpiDomain final : public Domain {
     BytesSent sent_;
     int rank_ = 0, size_ = 1;
     std::vector<Index> cuts_;
-    std::vector<HaloPeer> peers_;
+    std::vector<HaloPeer> peers_;  ///< the pairs' halo
+    struct Halo {
+        GhostColumns which;
+        std::vector<HaloPeer> peers;
+    };
+    std::vector<Halo> halos_;      ///< halos of their own (addHalo)
     std::vector<Index> pairCuts_;  ///< the first pair (CSR entry) of each process's particles
     std::vector<Index> ghosts_;    ///< every peer's receive list, ascending
     const PairList* pairs_ = nullptr;

@@ -10,6 +10,7 @@
 // material length; the band then spans about 2ℓ at any resolution finer than ℓ.
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/types.hpp"
@@ -35,10 +36,10 @@ class NonlocalAverage {
 
     Index begin() const { return begin_; }
     Index end() const { return end_; }
-    /// Neighbours (itself included) of particle a, and their weights (summing to 1).
-    std::size_t neighbors(Index a) const {
+    /// Neighbours (itself included) of particle a, ascending, and their weights (summing to 1).
+    std::span<const Index> neighbors(Index a) const {
         const auto i = static_cast<std::size_t>(a - begin_);
-        return offset_[i + 1] - offset_[i];
+        return {neighbor_.data() + offset_[i], offset_[i + 1] - offset_[i]};
     }
     double weight(Index a, Index b) const;
 

@@ -440,6 +440,7 @@ StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& b
                 : NonlocalAverage());
         if (damage && damage->nonlocal()) averagedDriver_.assign(n, 0.0);
     }
+    owned_ = {0, ref.size()};
 }
 
 void StressUpdate::advance(State& state, double dt, bool atRest) {
@@ -461,13 +462,16 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      viscosity_,
                      hourglass_ == HourglassModulus::Secant};
     // The nonlocal damage's averages of the drivers at t_n, before any particle updates its own.
-    for (const NonlocalAverage& average : nonlocal_)
-        if (!atRest && average.end() > average.begin())
-            parallelFor(average.end() - average.begin(), [&](std::ptrdiff_t i) {
-                const Index a = average.begin() + static_cast<Index>(i);
+    for (const NonlocalAverage& average : nonlocal_) {
+        const Index begin = std::max(average.begin(), owned_.begin);
+        const Index end = std::min(average.end(), owned_.end);
+        if (!atRest && end > begin)
+            parallelFor(end - begin, [&](std::ptrdiff_t i) {
+                const Index a = begin + static_cast<Index>(i);
                 averagedDriver_[static_cast<std::size_t>(a)] =
                     average.average(state.damageDriver, a);
             });
+    }
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         const StencilBlocks& blocks = blocks_[b];
         std::visit(
@@ -515,7 +519,18 @@ void StressUpdate::bookDissipation(State& state, ParticleRange owned, Domain& do
         if (tracksHistory(*bodies_[b].material)) state.ledger.damageDissipation += dissipated_[b];
 }
 
+Reads StressUpdate::driverReads() const {
+    return [this](Index a, std::vector<Index>& out) {
+        for (const NonlocalAverage& average : nonlocal_)
+            if (a >= average.begin() && a < average.end()) {
+                const std::span<const Index> neighbors = average.neighbors(a);
+                out.insert(out.end(), neighbors.begin(), neighbors.end());
+            }
+    };
+}
+
 void StressUpdate::restrictTo(ParticleRange owned) {
+    owned_ = owned;
     for (std::size_t b = 0; b < blocks_.size(); ++b) {
         StencilBlocks& body = blocks_[b];
         StencilBlocks kept;

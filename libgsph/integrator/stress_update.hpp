@@ -68,6 +68,12 @@ class StressUpdate {
     const std::vector<CsrPairWeights>& staged() const { return staged_; }
     /// Current spacing ℓ_a of each particle [m].
     const std::vector<double>& lengthScale() const { return lengthScale_; }
+    /// Whether some body's damage is nonlocal: advance() then reads the damage driver of every
+    /// particle within its material length (driverReads), ghosts included.
+    bool averagesDriver() const { return !averagedDriver_.empty(); }
+    /// The particles whose damage driver a particle's nonlocal average reads (none outside a
+    /// body with a nonlocal damage).
+    Reads driverReads() const;
 
   private:
     void throwOnFailure(const State& state) const;
@@ -95,6 +101,7 @@ class StressUpdate {
     /// particle the averages of this step (sized only when a body's damage is nonlocal).
     std::vector<NonlocalAverage> nonlocal_;
     std::vector<double> averagedDriver_;
+    ParticleRange owned_;  ///< the particles advance() updates (restrictTo)
 };
 
 }  // namespace gsph

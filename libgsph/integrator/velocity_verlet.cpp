@@ -56,15 +56,6 @@ TimeStepRule timeStepRule(const SolverOptions& o) {
     return {o.cfl, o.fixedTimeStep, o.minTimeStepRatio};
 }
 
-// What a run split over processes cannot do yet, or empty: an average over a material length
-// reaches beyond the ghosts.
-std::string notSplittable(const std::vector<BodyRange>& bodies) {
-    for (const BodyRange& body : bodies)
-        if (const JohnsonCookDamage* damage = damageModel(*body.material))
-            if (damage->nonlocal()) return "a nonlocal damage";
-    return {};
-}
-
 }  // namespace
 
 VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodies,
@@ -125,18 +116,14 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
 }
 
 void VelocityVerlet::setDomain(std::shared_ptr<Domain> domain) {
-    if (domain->processes() > 1) {
-        const std::string what = notSplittable(bodies_);
-        if (!what.empty())
-            throw InputError("this run has " + what + ", which a run on " +
-                             std::to_string(domain->processes()) +
-                             " processes cannot do yet: run it on one");
-    }
     domain_ = std::move(domain);
     owned_ = domain_->split(ref_, stress_.blocks(), !bonds_.enabled());
     channels_.owned = owned_;
     channels_.domain = domain_.get();
     stress_.restrictTo(owned_);
+    if (stress_.averagesDriver())
+        domain_->addHalo(GhostColumns::DamageDriver, stress_.driverReads(),
+                         "the nonlocal damage's average");
 }
 
 void VelocityVerlet::shareGhosts(State& state, GhostColumns which) {
@@ -147,7 +134,10 @@ void VelocityVerlet::shareGhosts(State& state, GhostColumns which) {
             ghostArrays_.push_back(ghostArray(field.component(c)));
     };
     const double t0 = omp_get_wtime();
-    if (which == GhostColumns::Motion) {
+    if (which == GhostColumns::DamageDriver) {
+        ghostArrays_ = {ghostArray(state.damageDriver.data())};
+        domain_->shareGhosts(which, ghostArrays_);
+    } else if (which == GhostColumns::Motion) {
         // The state's x, v (the bonds' stretch and released energy read them), then the SoA
         // copies the stress update reads.
         ghostArrays_ = {ghostArray(state.x.data()), ghostArray(state.v.data())};
@@ -262,6 +252,7 @@ void VelocityVerlet::step(State& state) {
     // 3–4: F, Ḟ, σ at t_{n+1} and their dissipation.
     state.time += dt;
     const double t1 = omp_get_wtime();
+    if (stress_.averagesDriver()) shareGhosts(state, GhostColumns::DamageDriver);
     stress_.advance(state, dt, false);
     shareGhosts(state, GhostColumns::ForceFactors);
     stress_.bookDissipation(state, owned_, *domain_);

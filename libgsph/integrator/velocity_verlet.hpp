@@ -115,9 +115,8 @@ class VelocityVerlet {
     void resume(const State& state);
     void step(State& state);
     /// Splits the run over the domain's processes (before initialize() or resume()): this
-    /// process then advances only its own particles. Throws InputError when the run uses what a
-    /// split run cannot do yet (bonds that break, self-contact, a nonlocal damage) on more than
-    /// one process.
+    /// process then advances only its own particles. Throws InputError when the blocks leave
+    /// some process no particles.
     void setDomain(std::shared_ptr<Domain> domain);
     const Domain& domain() const { return *domain_; }
     Domain& domain() { return *domain_; }

@@ -2,7 +2,8 @@
 // The split of a run over processes (distributed/halo_plan.hpp) on two overset blocks of
 // spacing 1:2, band included: the cuts fall between blocks or split a strided one, and share
 // the cost; each process receives exactly the other processes' particles its own read (pairs
-// and transposed cross pairs), and what one sends another is what that one receives.
+// and transposed cross pairs, or a relation of its own), and what one sends another is what
+// that one receives.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -116,7 +117,7 @@ TEST(HaloPlan, EachProcessReceivesWhatItsParticlesReadAndSendsWhatTheOthersRead)
     const int processes = 3;
     const std::vector<Index> cuts = cutByCost({s.blocks}, ref.size(), processes);
     std::vector<std::vector<HaloPeer>> plans;
-    for (int p = 0; p < processes; ++p) plans.push_back(planHalo(ref, cuts, p));
+    for (int p = 0; p < processes; ++p) plans.push_back(planHalo(pairReads(ref), cuts, p));
     for (int p = 0; p < processes; ++p) {
         const Index lo = cuts[static_cast<std::size_t>(p)];
         const Index hi = cuts[static_cast<std::size_t>(p) + 1];
@@ -145,6 +146,38 @@ TEST(HaloPlan, EachProcessReceivesWhatItsParticlesReadAndSendsWhatTheOthersRead)
                                            [&](const HaloPeer& h) { return h.process == p; });
             ASSERT_NE(back, theirs.end());
             EXPECT_EQ(back->send, peer.receive);
+        }
+        EXPECT_EQ(received, expected) << "process " << p;
+        EXPECT_FALSE(expected.empty());
+    }
+}
+
+TEST(HaloPlan, AHaloOfItsOwnFollowsItsRelationNotThePairs) {
+    // A read beyond the pairs (a nonlocal average): particle a reads a ± 40 (further than any
+    // pair on this layout), nothing else. Each process receives exactly those outside its range.
+    const Split s;
+    const Index n = s.ref.size();
+    const Reads far = [n](Index a, std::vector<Index>& out) {
+        for (Index b : {a - 40, a + 40})
+            if (b >= 0 && b < n) out.push_back(b);
+    };
+    const int processes = 3;
+    const std::vector<Index> cuts = cutByCost({s.blocks}, n, processes);
+    for (int p = 0; p < processes; ++p) {
+        const Index lo = cuts[static_cast<std::size_t>(p)];
+        const Index hi = cuts[static_cast<std::size_t>(p) + 1];
+        std::set<Index> expected, received;
+        for (Index a = lo; a < hi; ++a)
+            for (Index b : {a - 40, a + 40})
+                if (b >= 0 && b < n && (b < lo || b >= hi)) expected.insert(b);
+        for (const HaloPeer& peer : planHalo(far, cuts, p)) {
+            received.insert(peer.receive.begin(), peer.receive.end());
+            for (Index a : peer.send) {
+                const Index qlo = cuts[static_cast<std::size_t>(peer.process)];
+                const Index qhi = cuts[static_cast<std::size_t>(peer.process) + 1];
+                EXPECT_TRUE((a - 40 >= qlo && a - 40 < qhi) || (a + 40 >= qlo && a + 40 < qhi))
+                    << "sent " << a << " to process " << peer.process << ", which does not read it";
+            }
         }
         EXPECT_EQ(received, expected) << "process " << p;
         EXPECT_FALSE(expected.empty());
