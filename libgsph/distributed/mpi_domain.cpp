@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "core/error.hpp"
 #include "distributed/halo_plan.hpp"
@@ -81,12 +82,7 @@ class MpiDomain final : public Domain {
 
     void addHalo(GhostColumns which, const Reads& reads, const std::string& what) override {
         halos_.push_back({which, planHalo(reads, cuts_, rank_)});
-        long mine = 0;
-        for (const HaloPeer& peer : halos_.back().peers)
-            mine += static_cast<long>(peer.receive.size());
-        long total = 0, most = 0;
-        check(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
-        check(MPI_Allreduce(&mine, &most, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+        const auto [total, most] = ghostCounts(halos_.back().peers);
         description_ += "; " + what + ": " + std::to_string(total) +
                         " ghosts of its own (at most " + std::to_string(most) + " on one)";
     }
@@ -310,15 +306,21 @@ class MpiDomain final : public Domain {
         return peers_;
     }
 
+    // A halo's ghosts over all processes and the most on one (collective).
+    std::pair<long, long> ghostCounts(const std::vector<HaloPeer>& peers) const {
+        long mine = 0;
+        for (const HaloPeer& peer : peers) mine += static_cast<long>(peer.receive.size());
+        long total = 0, most = 0;
+        check(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
+        check(MPI_Allreduce(&mine, &most, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+        return {total, most};
+    }
+
     // Ghosts over all processes and the most on one, and the bytes a step exchanges: per ghost,
     // x and v (6 doubles) and the force factors (K, N, F: 27, and c, ρ, α, s: 4); bonds that
     // break add the damage and σ, and their rows when some break.
     void describeSplit(const std::vector<std::ptrdiff_t>& costs) {
-        long mine = 0;
-        for (const HaloPeer& peer : peers_) mine += static_cast<long>(peer.receive.size());
-        long total = 0, most = 0;
-        check(MPI_Allreduce(&mine, &total, 1, MPI_LONG, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
-        check(MPI_Allreduce(&mine, &most, 1, MPI_LONG, MPI_MAX, MPI_COMM_WORLD), "MPI_Allreduce");
+        const auto [total, most] = ghostCounts(peers_);
         std::string cuts;
         for (std::size_t r = 1; r + 1 < cuts_.size(); ++r)
             cuts += (r > 1 ? ", " : "") + std::to_string(cuts_[r]);
