@@ -26,6 +26,13 @@ struct Shape {
     double regionStrain = 0.0;             // ε̄p over the impact face's centre region (taylor.py)
 };
 
+// The number taylor.py prints after `label` (0 and a failure when the label is missing).
+double numberAfter(const std::string& out, const std::string& label) {
+    const std::size_t at = out.find(label);
+    EXPECT_NE(at, std::string::npos) << label << " not in: " << out;
+    return at == std::string::npos ? 0.0 : std::stod(out.substr(at + label.size()));
+}
+
 Shape runTaylor(const fs::path& dir, const std::string& geometry, const std::string& sets,
                 const std::string& caseFile) {
     const fs::path particles = dir / "particles.h5", out = dir / "run";
@@ -43,15 +50,10 @@ Shape runTaylor(const fs::path& dir, const std::string& geometry, const std::str
         test::quote((out / "snapshot_000010.h5").string()));
     EXPECT_EQ(m.status, 0) << m.err;
     Shape shape;
-    const std::size_t l = m.out.find("length "), d = m.out.find("footprint diameter ");
-    EXPECT_NE(l, std::string::npos) << m.out;
-    EXPECT_NE(d, std::string::npos) << m.out;
-    if (l != std::string::npos) shape.length = std::stod(m.out.substr(l + 7));
-    if (d != std::string::npos) shape.footprint = std::stod(m.out.substr(d + 19));
-    const std::string region = "centre region (r < R0/5, the first L0/50): plastic strain ";
-    const std::size_t e = m.out.find(region);
-    EXPECT_NE(e, std::string::npos) << m.out;
-    if (e != std::string::npos) shape.regionStrain = std::stod(m.out.substr(e + region.size()));
+    shape.length = numberAfter(m.out, "length ");
+    shape.footprint = numberAfter(m.out, "footprint diameter ");
+    shape.regionStrain =
+        numberAfter(m.out, "centre region (r < R0/5, the first L0/50): plastic strain ");
     return shape;
 }
 
