@@ -9,7 +9,10 @@
 // annulus blocks run from the core's sides to the outer surface. The annulus blocks glue into
 // one generalized space, periodic in its angular index; the core is a space of its own (its
 // indices cannot glue consistently to the annulus's radial/angular ones), coupled to the
-// annulus by the overset method. Cells are graded along z, finest at the impact face.
+// annulus by the overset method. Cells are graded along z, finest at the impact face; `lip`
+// grades them radially towards the surface, `centre` across the core towards the axis (the
+// impact zone's resolution at ≤ 10k particles: --set n=12 --set nr=3 --set nz=34
+// --set grading=1.08 --set centre=10 --set lip=0.7, docs/validation.md).
 // Every parameter can be overridden with `gmsh -setnumber NAME VALUE` or
 // `gsph-preproc --set NAME=VALUE`. Units: SI (m).
 // Body: Physical Volume "rod". Sets: "impact" (z = 0), "free_end" (z = L), "lateral" (r = R).
@@ -24,12 +27,15 @@ DefineConstant[
   grading = {1.03, Name "Parameters/grading"},  // ratio of successive cell lengths from z = 0
   lip = {1, Name "Parameters/lip"},           // ratio of successive radial cells from the core
                                               // to the surface (below 1: finer at the lip)
+  centre = {1, Name "Parameters/centre"},     // gmsh Bump on the core's sides: above 1, cells
+                                              // finer at the axis (10: about 6 times finer
+                                              // there than at the core's corners)
   refine = {1, Name "Parameters/refine"}      // multiplies every cell count (convergence studies)
 ];
 // Parameter ranges: a clear error (gsph-preproc reports it) instead of a degenerate mesh
 // or a crash inside gmsh.
-If (R <= 0 || L <= 0 || core <= 0 || grading <= 0 || lip <= 0 || n < 1 || nr < 1 || nz < 1 || refine < 1)
-  Error("taylor_bar.geo: needs R, L, core, grading > 0; n, nr, nz, refine ≥ 1 (got R = %g, L = %g, core = %g, grading = %g, n = %g, nr = %g, nz = %g, refine = %g)", R, L, core, grading, n, nr, nz, refine);
+If (R <= 0 || L <= 0 || core <= 0 || grading <= 0 || lip <= 0 || centre <= 0 || n < 1 || nr < 1 || nz < 1 || refine < 1)
+  Error("taylor_bar.geo: needs R, L, core, grading, lip, centre > 0; n, nr, nz, refine ≥ 1 (got R = %g, L = %g, core = %g, grading = %g, lip = %g, centre = %g, n = %g, nr = %g, nz = %g, refine = %g)", R, L, core, grading, lip, centre, n, nr, nz, refine);
 EndIf
 c = core * R;
 s = R / Sqrt(2);
@@ -47,7 +53,12 @@ For k In {0:3}
   spoke[k] = newl;  Line(spoke[k]) = {core_[k], rim[k]};             // core corner -> rim
   arc[k] = newl;    Circle(arc[k]) = {rim[k], 1, rim[(k + 1) % 4]};  // a quarter of the rim
 EndFor
-Transfinite Curve{side[], arc[]} = n * refine + 1;
+If (centre == 1)
+  Transfinite Curve{side[], arc[]} = n * refine + 1;
+Else
+  Transfinite Curve{side[]} = n * refine + 1 Using Bump centre;
+  Transfinite Curve{arc[]} = n * refine + 1;
+EndIf
 If (lip == 1)
   Transfinite Curve{spoke[]} = nr * refine + 1;
 Else

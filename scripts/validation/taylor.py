@@ -2,9 +2,11 @@
 # SPDX-License-Identifier: MIT
 """Final length, footprint diameter and outline of a Taylor bar from a gsph-solve snapshot.
 
-Each particle stands for its cell: the reference half-edges e_d = ½ ∂X/∂θ_d come from central
-differences of X over the particle's lattice neighbours in its home space (one-sided at a
-space's boundary, wrapped on periodic indices), the deformed half-edges are F e_d, and the
+Each particle stands for its cell: the reference half-edges e_d are half the step from the
+centre of the cell's −d face to that of its +d face, from the cell's corners in /spaces/nodes
+(for a file without them, central differences of X over the particle's lattice neighbours in
+its home space: one-sided at a space's boundary, wrapped on periodic indices, and short of the
+cell on graded lattices), the deformed half-edges are F e_d, and the
 particle's cell reaches n·x + Σ_d |n·F e_d| along a direction n. The bar's length is the
 distance between its highest and lowest reach along z (the axis). The footprint diameter is
 that of the disc of the impact face's area: the particles of the set "impact" (the face z = 0)
@@ -50,6 +52,9 @@ def half_edges(particles_h5):
         cells = f["spaces/cells"][...].astype(np.int64)
         periodic = f["spaces/periodic"][...].astype(bool)
         impact = f["sets/impact"][...].astype(np.int64)
+        nodes = f["spaces/nodes"][...] if "spaces/nodes" in f else None
+    if nodes is not None:
+        return corner_edges(nodes, ijk, space, cells, periodic, dimension), impact, dimension
     n = len(X)
     # One integer key per (space, i, j, k): index into a dense table per space.
     offset = np.concatenate([[0], np.cumsum(np.prod(cells, axis=1))])
@@ -81,6 +86,34 @@ def half_edges(particles_h5):
         e[only_down] = 0.5 * (X[only_down] - X[down[only_down]])
         edges[:, d, :] = e
     return edges, impact, dimension
+
+
+def corner_edges(nodes, ijk, space, cells, periodic, dimension):
+    """Half-edges of each particle's cell from its corners (/spaces/nodes: per space, m_d = n_d + 1
+    nodes along index d, n_d along a periodic one; i fastest): e_d is half the step between the
+    centres of the cell's faces across d, exact for any hexahedron (quadrangle on a section)."""
+    extent = cells + np.where(periodic, 0, 1)
+    first = np.concatenate([[0], np.cumsum(np.prod(extent, axis=1))])
+    m = extent[space]  # (N, 3)
+    corners = {}
+    for a in (0, 1):
+        for b in (0, 1):
+            for c in (0, 1):
+                idx = ijk + np.array([a, b, c])
+                idx = np.where(periodic[space], idx % m, idx)
+                corners[a, b, c] = nodes[first[space] + idx[:, 0] + m[:, 0] * (idx[:, 1] + m[:, 1] * idx[:, 2])]
+    edges = np.zeros((len(ijk), 3, 3))
+    layers = (0, 1) if dimension == 3 else (0,)  # a section's slab: its k = 0 layer
+    for d in range(dimension):
+        step = np.zeros_like(edges[:, 0, :])
+        count = 0
+        for key, x in corners.items():
+            if key[2] not in layers:
+                continue
+            step += x if key[d] == 1 else -x
+            count += 1
+        edges[:, d, :] = step / count  # = ½ (mean of the +d corners − mean of the −d corners)
+    return edges
 
 
 def centre_region(particles_h5, edges, dimension, samples=8):
