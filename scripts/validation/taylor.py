@@ -101,7 +101,8 @@ def corner_edges(nodes, ijk, space, cells, periodic, dimension):
             for c in (0, 1):
                 idx = ijk + np.array([a, b, c])
                 idx = np.where(periodic[space], idx % m, idx)
-                corners[a, b, c] = nodes[first[space] + idx[:, 0] + m[:, 0] * (idx[:, 1] + m[:, 1] * idx[:, 2])]
+                at = first[space] + idx[:, 0] + m[:, 0] * (idx[:, 1] + m[:, 1] * idx[:, 2])
+                corners[a, b, c] = nodes[at]
     edges = np.zeros((len(ijk), 3, 3))
     layers = (0, 1) if dimension == 3 else (0,)  # a section's slab: its k = 0 layer
     for d in range(dimension):
