@@ -95,25 +95,20 @@ def corner_edges(nodes, ijk, space, cells, periodic, dimension):
     extent = cells + np.where(periodic, 0, 1)
     first = np.concatenate([[0], np.cumsum(np.prod(extent, axis=1))])
     m = extent[space]  # (N, 3)
+    layers = (0, 1) if dimension == 3 else (0,)  # a section's slab: its k = 0 layer
     corners = {}
     for a in (0, 1):
         for b in (0, 1):
-            for c in (0, 1):
+            for c in layers:
                 idx = ijk + np.array([a, b, c])
                 idx = np.where(periodic[space], idx % m, idx)
                 at = first[space] + idx[:, 0] + m[:, 0] * (idx[:, 1] + m[:, 1] * idx[:, 2])
                 corners[a, b, c] = nodes[at]
     edges = np.zeros((len(ijk), 3, 3))
-    layers = (0, 1) if dimension == 3 else (0,)  # a section's slab: its k = 0 layer
     for d in range(dimension):
-        step = np.zeros_like(edges[:, 0, :])
-        count = 0
-        for key, x in corners.items():
-            if key[2] not in layers:
-                continue
-            step += x if key[d] == 1 else -x
-            count += 1
-        edges[:, d, :] = step / count  # = ½ (mean of the +d corners − mean of the −d corners)
+        # ½ (mean of the +d corners − mean of the −d corners)
+        step = sum(x if key[d] == 1 else -x for key, x in corners.items())
+        edges[:, d, :] = step / len(corners)
     return edges
 
 

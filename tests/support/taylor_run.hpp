@@ -10,6 +10,7 @@
 #include <string>
 
 #include "support/process.hpp"
+#include "support/sample_run.hpp"
 
 namespace gsph::test {
 
@@ -32,19 +33,19 @@ inline TaylorShape runAndMeasureTaylor(const std::filesystem::path& dir,
                                        const std::string& caseFile,
                                        const std::string& solveOptions = "", int solveStatus = 0,
                                        const std::string& snapshot = "snapshot_000010.h5") {
-    const std::filesystem::path source = GSPH_SOURCE_DIR;
     const std::filesystem::path particles = dir / "particles.h5", run = dir / "run";
     const auto p =
-        runCommand(std::string(GSPH_PREPROC_EXE) + " " + quote((source / geometry).string()) + " " +
-                   sets + " -q -o " + quote(particles.string()));
+        runCommand(std::string(GSPH_PREPROC_EXE) + " " + quote((kSourceDir / geometry).string()) +
+                   " " + sets + " -q -o " + quote(particles.string()));
     EXPECT_EQ(p.status, 0) << p.err;
-    const auto s = runCommand(
-        std::string(GSPH_SOLVE_EXE) + " " + quote((source / caseFile).string()) + " --particles " +
-        quote(particles.string()) + " -o " + quote(run.string()) + " " + solveOptions);
+    const auto s =
+        runCommand(std::string(GSPH_SOLVE_EXE) + " " + quote((kSourceDir / caseFile).string()) +
+                   " --particles " + quote(particles.string()) + " -o " + quote(run.string()) +
+                   " " + solveOptions);
     EXPECT_EQ(s.status, solveStatus) << s.err;
-    const auto m =
-        runCommand("/usr/bin/python3 " + quote((source / "scripts/validation/taylor.py").string()) +
-                   " " + quote(particles.string()) + " " + quote((run / snapshot).string()));
+    const auto m = runCommand("/usr/bin/python3 " +
+                              quote((kSourceDir / "scripts/validation/taylor.py").string()) + " " +
+                              quote(particles.string()) + " " + quote((run / snapshot).string()));
     EXPECT_EQ(m.status, 0) << m.err;
     TaylorShape shape;
     shape.length = numberAfter(m.out, "length ");
