@@ -72,21 +72,56 @@ void put(const Reference& ref, Index c, const PairRecord& r, StagedPairs& st, st
     }
 }
 
+// The slot of c's pairs from the other side's lists (Reference::crossOffset) whose owner is b
+// and that holds, or −1.
+Index heldCrossSlot(const Reference& ref, const BondView& bonds, Index c, Index b) {
+    const auto ic = static_cast<std::size_t>(c);
+    for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot)
+        if (ref.crossOwner[static_cast<std::size_t>(slot)] == b &&
+            bonds.holds(ref.crossPair[static_cast<std::size_t>(slot)]))
+            return slot;
+    return -1;
+}
+
+// Whether c's own list holds a pair with b.
+bool holdsOwnPair(const Reference& ref, const BondView& bonds, Index c, Index b) {
+    const PairList& P = ref.pairs;
+    for (Index k = P.begin(c); k < P.end(c); ++k)
+        if (P.neighbor[static_cast<std::size_t>(k)] == b && bonds.holds(k)) return true;
+    return false;
+}
+
 // Calls visit(record) for every pair of c that holds and is not `taken` (per own-list pair;
-// null: none), own list first.
+// null: none), own list first. A pair across spaces that both lists hold, (c, b) in c's and
+// (b, c) in b's, is one record: it reads b's fields once. Its terms are the two records'
+// (the own one has no transposed or viscous-transposed weight, the other no own or viscous
+// one), and its hourglass weight the sum of both kernels' W at the same share ½, the same
+// force to round-off (forces/hourglass.hpp is linear in the weight).
 template <class Visit>
 void forEachPair(const Reference& ref, const BondView& bonds, Index c, const std::uint8_t* taken,
                  Visit&& visit) {
     const PairList& P = ref.pairs;
     const auto ic = static_cast<std::size_t>(c);
-    for (Index k = P.begin(c); k < P.end(c); ++k)
-        if (bonds.holds(k) && (taken == nullptr || taken[k] == 0))
-            visit(ownRecord(ref, bonds, c, k));
-    if (!ref.crossOffset.empty())
+    const bool overset = !ref.crossOffset.empty();
+    for (Index k = P.begin(c); k < P.end(c); ++k) {
+        if (!bonds.holds(k) || (taken != nullptr && taken[k] != 0)) continue;
+        PairRecord r = ownRecord(ref, bonds, c, k);
+        if (overset && ref.space[static_cast<std::size_t>(r.b)] != ref.space[ic]) {
+            const Index slot = heldCrossSlot(ref, bonds, c, r.b);
+            if (slot >= 0) {
+                const PairRecord t =
+                    crossRecord(ref, bonds, ref.crossPair[static_cast<std::size_t>(slot)], r.b);
+                r.wT = t.wT, r.gN = t.gN, r.W += t.W;
+            }
+        }
+        visit(r);
+    }
+    if (overset)
         for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot) {
             const Index k = ref.crossPair[static_cast<std::size_t>(slot)];
-            if (bonds.holds(k))
-                visit(crossRecord(ref, bonds, k, ref.crossOwner[static_cast<std::size_t>(slot)]));
+            const Index owner = ref.crossOwner[static_cast<std::size_t>(slot)];
+            if (bonds.holds(k) && !holdsOwnPair(ref, bonds, c, owner))
+                visit(crossRecord(ref, bonds, k, owner));
         }
 }
 

@@ -6,17 +6,23 @@
 //
 // A particle's run holds its own list's pairs that hold (less those its masked strip takes),
 // then the pairs across spaces whose transposed term comes from the other side's list
-// (Reference::crossPair), padded to a multiple of kPairLanes (core/lanes.hpp). Per pair, with
+// (Reference::crossPair) and not from a pair of its own list, padded to a multiple of kPairLanes
+// (core/lanes.hpp). A pair across spaces that both lists hold is one entry with both lists'
+// terms, so b's fields are gathered once for it. Per pair, with
 // w_cb = ω∇W_cb the table's weight and δw the interface corrections
 // (overset/interface_weights.hpp), DESIGN §4 and §6:
 //   wOwn  w_cb + c's correction (when c keeps all its bonds): F's sum and the stress sum Σ w_cb;
 //         0 for a pair of the other side's list;
 //   wT    the transposed stress term's weight: w_cb − the mirror's correction (same space,
-//         when b keeps all its bonds), 0 across spaces, −(w_bc + b's correction) from b's list;
+//         when b keeps all its bonds), −(w_bc + b's correction) from b's list across spaces
+//         (0 when b's list does not hold the pair);
 //   gQ    the viscous sum's weight: w_cb (own list), 0 (b's list);
-//   gN    the viscous transposed term's: w_cb same space, 0 across, −w_bc from b's list;
+//   gN    the viscous transposed term's: w_cb same space, −w_bc from b's list across spaces
+//         (0 when it does not hold the pair);
 //   Y, Y2 X_b − X_c and |X_b − X_c|² ((Y0² + Y1²) + Y2²); hBar ½(h_c + h_b) (the viscosity's);
-//   hgWeight  ½(V_c + V_b) ω W (the hourglass pair's weight, forces/hourglass.hpp);
+//   hgWeight  ½(V_c + V_b) ω W (the hourglass pair's weight, forces/hourglass.hpp); for a pair
+//         across spaces that both lists hold, W is the sum of their kernels' W (the force is
+//         linear in it: the two halves' sum to round-off);
 //   share the hourglass force's share (1 within a space, ½ across, the other half on the
 //         other side), 0 for padding (b = c): the loops read share ≠ 0 as "the pair exists".
 // Y, Y2, hBar and hgWeight are reference data the force would otherwise gather per pair at
