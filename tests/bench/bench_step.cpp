@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: MIT
 // gsph-bench: runs the full step (F, Ḟ, Jaumann update — hypo-elastic, or Johnson–Cook with
 // --johnson-cook —, forces, artificial viscosity and hourglass control on) on a 3-D block of n³
-// particles for a fixed number of steps and prints particle-steps per second, peak memory per
-// particle and the time per phase.
+// particles for a fixed number of steps on each thread count of --threads (default 1 and 2, one
+// after the other on the same run: the step's work does not change with the state, the lists
+// being the reference configuration's), and prints particle-steps per second and per core for
+// each, the speed-up over the first count, peak memory per particle and the time per phase.
 //
-// Usage:   gsph-bench [--cells N] [--steps S] [--kappa K] [--no-viscosity] [--no-hourglass]
-//                     [--johnson-cook] [--contact | --ogrid] [--lanes W]
+// Usage:   gsph-bench [--cells N] [--steps S] [--threads 1,2] [--kappa K] [--no-viscosity]
+//                     [--no-hourglass] [--johnson-cook] [--contact | --ogrid] [--lanes W]
 // --contact: the cube as two bodies (a slab of its first 20 % in z driven at 50 m/s into the
 // rest), so the step also runs the contact search and the penalty forces between them.
 // --ogrid: instead of the cube, the O-grid cylinder of geometries/taylor_bar.geo (a Cartesian
@@ -15,7 +17,8 @@
 // Taylor sample's workload, curved spaces, the band and a wall included.
 // Sample:  gsph-bench --cells 46 --steps 100      (≈ 1e5 particles)
 //          gsph-bench --cells 100 --steps 20      (1e6 particles)
-// Threads: OMP_NUM_THREADS.
+// scripts/bench runs a set of these (and the Taylor sample through gsph-solve) against the
+// build of another commit, interleaved.
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
@@ -24,6 +27,7 @@
 #include <ctime>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "conversion.hpp"
 #include "core/lanes.hpp"
@@ -81,7 +85,14 @@ int main(int argc, char** argv) {
     bool noViscosity = false, noHourglass = false;
     app.add_option("--cells", cells, "particles per edge of the cube (n³ particles)")
         ->check(CLI::Range(8, 400));
-    app.add_option("--steps", steps, "time steps to run")->check(CLI::Range(1, 1000000));
+    app.add_option("--steps", steps, "time steps to run on each thread count")
+        ->check(CLI::Range(1, 1000000));
+    std::vector<int> threadCounts = {1, 2};
+    app.add_option("--threads", threadCounts,
+                   "thread counts to run the steps on, one after the other (speed-up against the "
+                   "first)")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 1024));
     app.add_option("--kappa", kappa, "h = κΔθ (1.2: 56 neighbours)")->check(CLI::Range(0.6, 3.0));
     app.add_flag("--no-viscosity", noViscosity, "switch artificial viscosity off");
     app.add_flag("--no-hourglass", noHourglass, "switch hourglass control off");
@@ -149,19 +160,34 @@ int main(int argc, char** argv) {
     const double setupSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - tSetup).count();
 
-    const auto t0 = std::chrono::steady_clock::now();
-    const std::clock_t c0 = std::clock();
-    for (int s = 0; s < steps; ++s) sim.step();
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    // Process CPU time (all threads): less sensitive than wall time to other load on the machine.
-    const double cpuSeconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+    // The same steps on each thread count, timed apart (wall and process CPU time: the latter
+    // less sensitive to other load on the machine).
+    struct Measured {
+        int threads;
+        double seconds, cpuSeconds;
+        PhaseTimes phases;
+    };
+    std::vector<Measured> measured;
+    for (const int threads : threadCounts) {
+        omp_set_num_threads(threads);
+        const PhaseTimes before = sim.integrator().phaseTimes();
+        const auto t0 = std::chrono::steady_clock::now();
+        const std::clock_t c0 = std::clock();
+        for (int s = 0; s < steps; ++s) sim.step();
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double cpuSeconds = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+        const PhaseTimes& after = sim.integrator().phaseTimes();
+        measured.push_back({threads,
+                            seconds,
+                            cpuSeconds,
+                            {after.kinematicsAndStress - before.kinematicsAndStress,
+                             after.forces - before.forces, after.contact - before.contact,
+                             after.other - before.other, after.exchange - before.exchange}});
+    }
 
     const double n = sim.reference().size();
     const double pairs = sim.reference().pairs.pairs();
-    const PhaseTimes& ph = sim.integrator().phaseTimes();
-    const double rate = n * steps / seconds;
-    const int threads = omp_get_max_threads();
     std::size_t band = 0;
     for (Index a = 0; a < sim.reference().size(); ++a) band += sim.reference().inOversetBand(a);
     std::printf("particles            %.0f (%s), %.1f neighbours per particle, κ = %.2f\n", n,
@@ -186,7 +212,6 @@ int main(int argc, char** argv) {
     std::printf(
         "stencil blocks       %zu particles (%.1f %%); %zu with pairs across spaces (%.1f %%)\n",
         stencilParticles, 100.0 * stencilParticles / n, crossSpace, 100.0 * crossSpace / n);
-    std::printf("threads              %d\n", threads);
     std::printf("material             %s\n",
                 plastic ? "Johnson–Cook + damage (Weldox 460E)" : "hypo-elastic steel");
     std::printf("stencil strips       up to %d lanes\n", laneWidth());
@@ -199,10 +224,17 @@ int main(int argc, char** argv) {
                         : "off",
                 pairContact ? pairContact->contact().pairsInContact() : 0L);
     std::printf("setup                %.2f s (pairs, metric, first forces)\n", setupSeconds);
-    std::printf("steps                %d in %.3f s\n", steps, seconds);
-    std::printf("particle-steps/s     %.3e  (%.3e per thread)\n", rate, rate / threads);
-    std::printf("per CPU second       %.3e  (particle-steps per second of process CPU time)\n",
-                n * steps / cpuSeconds);
+    // "threads N  R particle-steps/s (…)" is what scripts/bench reads.
+    for (const Measured& m : measured)
+        std::printf(
+            "threads %-4d %.3e particle-steps/s (%.3e per core), %.3e per CPU second; %d "
+            "steps in %.3f s\n",
+            m.threads, n * steps / m.seconds, n * steps / m.seconds / m.threads,
+            n * steps / m.cpuSeconds, steps, m.seconds);
+    for (std::size_t i = 1; i < measured.size(); ++i)
+        std::printf("speed-up             %.2f on %d threads against %d\n",
+                    measured[0].seconds / measured[i].seconds, measured[i].threads,
+                    measured[0].threads);
     std::printf("peak bytes/particle  %.0f  (process peak RSS growth / particles)\n",
                 (peakResidentBytes() - baseline) / n);
     std::printf("pair-list bytes/particle %.0f\n", sim.reference().pairs.bytes() / n);
@@ -210,10 +242,12 @@ int main(int argc, char** argv) {
     for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged())
         staged += static_cast<double>(body.bytes());
     std::printf("staged CSR pairs bytes/particle %.0f (neighbors/staged_pairs.hpp)\n", staged / n);
-    std::printf(
-        "phases               kinematics+stress %.1f %%, forces %.1f %%, contact %.1f %%, "
-        "other %.1f %%\n",
-        100 * ph.kinematicsAndStress / seconds, 100 * ph.forces / seconds,
-        100 * ph.contact / seconds, 100 * ph.other / seconds);
+    for (const Measured& m : measured)
+        std::printf(
+            "phases, %d thread%s kinematics+stress %.1f %%, forces %.1f %%, contact %.1f %%, "
+            "other %.1f %%\n",
+            m.threads, m.threads == 1 ? " " : "s", 100 * m.phases.kinematicsAndStress / m.seconds,
+            100 * m.phases.forces / m.seconds, 100 * m.phases.contact / m.seconds,
+            100 * m.phases.other / m.seconds);
     return 0;
 }
