@@ -487,12 +487,25 @@ std::string sizeLine(const Reference& ref) {
     return line;
 }
 
-void logEnd(RunLog& log, const RunSummary& summary, const EnergyReport& e) {
+// The end of a finished run: its size and speed, where the time went (the step's phases, as
+// gsph-bench prints them, and the rest: snapshots, checkpoints, history), the energies.
+void logEnd(RunLog& log, const RunSummary& summary, const PhaseTimes& phases,
+            const EnergyReport& e) {
     char line[512];
     std::snprintf(line, sizeof line,
                   "done: t = %.4e s, %ld steps, %d snapshots, %.2f s wall, %.3e particle-steps/s",
                   summary.time, summary.steps, summary.snapshots, summary.wallSeconds,
                   summary.particleStepsPerSecond);
+    log.add(line);
+    const double wall = std::max(summary.wallSeconds, 1e-9);
+    const double rest =
+        wall - phases.kinematicsAndStress - phases.forces - phases.contact - phases.other;
+    std::snprintf(line, sizeof line,
+                  "time: kinematics+stress %.1f %%, forces %.1f %%, contact, walls and loads "
+                  "%.1f %%, other step work %.1f %%, files and the rest %.1f %% of the wall time",
+                  100 * phases.kinematicsAndStress / wall, 100 * phases.forces / wall,
+                  100 * phases.contact / wall, 100 * phases.other / wall,
+                  100 * std::max(rest, 0.0) / wall);
     log.add(line);
     std::snprintf(line, sizeof line,
                   "energy: kinetic %.4e J, elastic %.4e J, hourglass %.3e J, viscous %.3e J, "
@@ -680,7 +693,7 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                          summary.checkpoint.string());
     } else {
         out.gather();  // the energies below read every particle
-        logEnd(*options.log, summary, sim.energy());
+        logEnd(*options.log, summary, sim.integrator().phaseTimes(), sim.energy());
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();
             char line[300];

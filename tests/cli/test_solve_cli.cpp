@@ -188,6 +188,25 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
     for (const auto& e : fs::directory_iterator(run))
         EXPECT_NE(e.path().filename().string()[0], '.')
             << "a temporary file was left: " << e.path();
+    // Where the wall time went: the step's four phases and the rest, shares that add up to the
+    // whole (each printed to 0.1 %).
+    const std::string log = test::slurp(run / "run.log");
+    const std::size_t timeLine = log.find("\ntime: kinematics+stress ");
+    ASSERT_NE(timeLine, std::string::npos) << log;
+    double shares[5] = {};
+    ASSERT_EQ(std::sscanf(log.c_str() + timeLine,
+                          "\ntime: kinematics+stress %lf %%, forces %lf %%, contact, walls and "
+                          "loads %lf %%, other step work %lf %%, files and the rest %lf %%",
+                          &shares[0], &shares[1], &shares[2], &shares[3], &shares[4]),
+              5)
+        << log.substr(timeLine, 200);
+    double whole = 0.0;
+    for (const double share : shares) {
+        EXPECT_GE(share, 0.0);
+        whole += share;
+    }
+    EXPECT_NEAR(whole, 100.0, 0.26);
+    EXPECT_GT(shares[1], 0.0);  // the bar's internal force
     // Energy: the ledger balances the boundary work (the driven face) within 1 %.
     std::vector<std::string> header;
     const auto rows = readCsv(run / "history.csv", header);
