@@ -154,4 +154,17 @@ requires(!std::is_arithmetic_v<L>) [[gnu::always_inline]] inline L
     return s < 0.0 ? q : L{};
 }
 
+/// Whether some lane of s is negative (s < 0): a strip's pairs with no lane approaching have
+/// no viscous pressure, and their whole viscous term can be skipped.
+[[gnu::always_inline]] inline bool anyNegative(double s) {
+    return s < 0.0;
+}
+template <class L>
+requires(!std::is_arithmetic_v<L>) [[gnu::always_inline]] inline bool anyNegative(const L& s) {
+    const auto negative = s < 0.0;  // lanes of all ones or 0
+    std::int64_t any = 0;
+    for (int j = 0; j < kLanesOf<L>; ++j) any |= negative[j];
+    return any != 0;
+}
+
 }  // namespace gsph

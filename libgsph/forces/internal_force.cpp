@@ -89,16 +89,18 @@ template <bool Viscous, int Hourglass, class L, class Load>
             L vx{};
             for (std::size_t r = 0; r < 3; ++r)
                 vx += (load(in.v[r] + a) - load(in.v[r] + b)) * y[r];
-            const L q = viscousPairPressure<L>(in.viscosity, vx, x2,
-                                               0.5 * (load(in.h + a) + load(in.h + b)),
-                                               0.5 * (load(in.c + a) + load(in.c + b)),
-                                               0.5 * (load(in.rho + a) + load(in.rho + b)),
-                                               0.5 * (load(in.alpha + a) + load(in.alpha + b)));
-            const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
-            for (std::size_t r = 0; r < 3; ++r) {
-                sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
-                fN[r] += q * (load(in.N[3 * r] + b) * w[0] + load(in.N[3 * r + 1] + b) * w[1] +
-                              load(in.N[3 * r + 2] + b) * w[2]);
+            if (anyNegative(vx)) {  // else q = 0 in every lane: nothing to add (the same bits)
+                const L q = viscousPairPressure<L>(in.viscosity, vx, x2,
+                                                   0.5 * (load(in.h + a) + load(in.h + b)),
+                                                   0.5 * (load(in.c + a) + load(in.c + b)),
+                                                   0.5 * (load(in.rho + a) + load(in.rho + b)),
+                                                   0.5 * (load(in.alpha + a) + load(in.alpha + b)));
+                const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
+                for (std::size_t r = 0; r < 3; ++r) {
+                    sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
+                    fN[r] += q * (load(in.N[3 * r] + b) * w[0] + load(in.N[3 * r + 1] + b) * w[1] +
+                                  load(in.N[3 * r + 2] + b) * w[2]);
+                }
             }
         }
         if constexpr (Hourglass) {
@@ -334,15 +336,18 @@ template <bool Viscous, int Hourglass, class L, class Weights, class Fetch>
     if constexpr (Viscous) {
         L vx{};
         for (std::size_t r = 0; r < 3; ++r) vx += (o.v[r] - fetch(in.v[r])) * -y[r];
-        const L q = viscousPairPressure<L>(in.viscosity, vx, y2, wt.hBar(in, o, fetch),
-                                           0.5 * (o.c + fetch(in.c)), 0.5 * (o.rho + fetch(in.rho)),
-                                           0.5 * (o.alpha + fetch(in.alpha)));
-        wt.viscous(w);
-        for (std::size_t r = 0; r < 3; ++r) s.sumQW[r] = valid ? s.sumQW[r] + q * w[r] : s.sumQW[r];
-        wt.viscousTransposed(w);
-        L Nw[3];
-        times(in.N, w, Nw);
-        for (std::size_t r = 0; r < 3; ++r) s.fN[r] = valid ? s.fN[r] + q * Nw[r] : s.fN[r];
+        if (anyNegative(vx)) {  // else q = 0 in every lane: nothing to add (the same bits)
+            const L q = viscousPairPressure<L>(
+                in.viscosity, vx, y2, wt.hBar(in, o, fetch), 0.5 * (o.c + fetch(in.c)),
+                0.5 * (o.rho + fetch(in.rho)), 0.5 * (o.alpha + fetch(in.alpha)));
+            wt.viscous(w);
+            for (std::size_t r = 0; r < 3; ++r)
+                s.sumQW[r] = valid ? s.sumQW[r] + q * w[r] : s.sumQW[r];
+            wt.viscousTransposed(w);
+            L Nw[3];
+            times(in.N, w, Nw);
+            for (std::size_t r = 0; r < 3; ++r) s.fN[r] = valid ? s.fN[r] + q * Nw[r] : s.fN[r];
+        }
     }
     if constexpr (Hourglass) {
         L Y[3], Y2;
