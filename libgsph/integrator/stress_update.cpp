@@ -107,6 +107,15 @@ struct StripParticles {
             for (int j = 0; j < kWidth; ++j) v[j] = rows[row[j]];
         return v;
     }
+    // Stores the lanes of the strip's rows (j < n) into a block's row-major array.
+    [[gnu::always_inline]] void storeRows(double* rows, const T& v) const {
+        if constexpr (std::is_arithmetic_v<T>)
+            rows[row[0]] = v;
+        else if (n == kWidth)
+            storeLanes<T>(rows + row[0], v);
+        else
+            for (int j = 0; j < n; ++j) rows[row[j]] = v[j];
+    }
     // Stores the lanes into a per-particle array (contiguous strips only).
     [[gnu::always_inline]] void store(double* perParticle, const T& v) const {
         if constexpr (std::is_arithmetic_v<T>)
@@ -146,28 +155,28 @@ template <class T>
 template <class Model>
 inline constexpr bool kUpdatesInStrips = std::is_same_v<Model, HypoElastic>;
 
+// J = det F as the factors below take it: from C = cof F's first column.
+template <class T>
+[[gnu::always_inline]] inline T factorsJ(const StripMat3<T>& F, const StripMat3<T>& C) {
+    return F(0, 0) * C(0, 0) + F(1, 0) * C(1, 0) + F(2, 0) * C(2, 0);
+}
+
 // The factors the force loop reads, from F and σ at t_{n+1} (DESIGN §4):
 // P = J σ F^{-T}; N = V J F^{-T} G = V (cof F) G, K = σ N = V P G; the density ρ0/J, the sound
 // speed, the time step's length and the viscosity's switch from tr L. For the lanes of p not
-// skipped; `point`: the material point whose sound speed a model with history gives (the
-// hypo-elastic one's is a constant).
-template <class Model, class T>
-[[gnu::always_inline]] inline void storeFactors(const Model& model, KinematicsStep& s,
+// skipped; soundSpeedAt(ρ) gives the lanes' sound speed at the density ρ0/J (the hypo-elastic
+// model's is a constant; a model with history takes its material point's).
+template <class T, class SoundSpeed>
+[[gnu::always_inline]] inline void storeFactors(double density0, KinematicsStep& s,
                                                 const StripParticles<T>& p, const StripMat3<T>& F,
                                                 const StripMat3<T>& cauchy, const T& trL,
-                                                MaterialPoint* point) {
+                                                const SoundSpeed& soundSpeedAt) {
     const StripMat3<T> C = cofactor(F);
-    const T J = F(0, 0) * C(0, 0) + F(1, 0) * C(1, 0) + F(2, 0) * C(2, 0);
-    const T density = model.elastic().density / J;
+    const T J = factorsJ(F, C);
+    const T density = density0 / J;
     const StripMat3<T> N = p.of(s.ref.quadVolume) * C * p.of(s.G);
     const StripMat3<T> K = cauchy * N;
-    T soundSpeed;
-    if constexpr (kUpdatesInStrips<Model>) {
-        soundSpeed = T{} + model.waveSpeed(MaterialPoint{});
-    } else {
-        point->density = density;
-        soundSpeed = model.waveSpeed(*point);
-    }
+    const T soundSpeed = soundSpeedAt(density);
     const T bound = smallestStretchBound(C, J);
     const T alpha = viscositySwitch(s.viscosity, p.of(s.ref.smoothingLength), trL, soundSpeed);
     if (p.contiguous) {
@@ -232,16 +241,15 @@ void storeHourglassScale(const Model& model, KinematicsStep& s, std::size_t ia, 
 // Steps 3–4 for the particles of a strip from their θ-gradients
 // (kinematics/deformation_gradient.hpp): F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the
 // force factors. Lanes marked skip are computed and not stored.
-template <class Model, class T>
-[[gnu::always_inline]] inline void advanceStrip(const Model& model, KinematicsStep& s,
-                                                const StripParticles<T>& p,
-                                                const BlockThetaGradients& g) {
-    if constexpr (std::is_arithmetic_v<T>)
-        if (p.skip[0]) return;
+// F and L = Ḟ F_{n+½}^{-1} of a strip's particles at t_{n+1}.
+template <class T>
+[[gnu::always_inline]] inline void stripKinematics(KinematicsStep& s, const StripParticles<T>& p,
+                                                   const BlockThetaGradients& g, StripMat3<T>& F,
+                                                   StripMat3<T>& L) {
     const StripMat3<T> G = p.of(s.G);
     const StripMat3<T> Fn = p.of(s.state.F.data());
     StripMat3<T> Fdot = p.of(g.v) * G.transpose();
-    StripMat3<T> F = p.of(g.x) * G.transpose();
+    F = p.of(g.x) * G.transpose();
     for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 3; ++c) F(r, c) = F(r, c) + s.outOfPlane(r, c);
     for (int j = 0; j < p.kWidth; ++j) {
@@ -257,94 +265,222 @@ template <class Model, class T>
                 for (int c = 0; c < 3; ++c)
                     setLane(F(r, c), j, laneOf(Fn(r, c), j) + s.dt * laneOf(Fdot(r, c), j));
     }
-    const StripMat3<T> L = Fdot * inverse(0.5 * (Fn + F));
+    L = Fdot * inverse(0.5 * (Fn + F));
+}
+
+// Steps 3–4 of the hypo-elastic model for a strip, every lane at once.
+template <class T>
+[[gnu::always_inline]] inline void advanceElasticStrip(const HypoElastic& model, KinematicsStep& s,
+                                                       const StripParticles<T>& p,
+                                                       const BlockThetaGradients& g) {
+    StripMat3<T> F, L;
+    stripKinematics(s, p, g, F, L);
     const StripMat3<T> D = 0.5 * (L + L.transpose());
     const StripMat3<T> W = 0.5 * (L - L.transpose());
-    StripMat3<T> cauchy = p.of(s.state.cauchy.data());
-    MaterialPoint point;
-    if constexpr (kUpdatesInStrips<Model>) {
-        cauchy = jaumannElasticUpdate(model.elastic(), cauchy, D, W, s.dt);
-    } else {
-        static_assert(std::is_arithmetic_v<T>, "a model with history updates one particle");
-        const std::size_t ia = p.index[0];
-        const double J = determinant(F);
-        point.cauchy = eigenOf(cauchy);
-        point.density = model.elastic().density / J;
-        if constexpr (kHasHistory<Model>) {
-            loadHistory<Model>(s.state, ia, point);
-            if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
-            point.size = s.ref.spacing[ia];
-        }
-        model.update(point, eigenOf(D), eigenOf(W), s.dt);
-        cauchy = stripOf(point.cauchy);
-        if constexpr (kHasHistory<Model>) {
-            storeHistory<Model>(point, ia, s.state);
-            // Per current volume → per particle: V J (the particle's current volume).
-            const double volume = s.ref.quadVolume[ia] * J;
-            s.state.plasticWork[ia] += volume * point.plasticWork;
-            s.damageDissipation[ia] = volume * point.damageDissipation;
-        }
-    }
+    const StripMat3<T> cauchy =
+        jaumannElasticUpdate(model.elastic(), p.of(s.state.cauchy.data()), D, W, s.dt);
     for (int j = 0; j < p.kWidth; ++j) {
         if (p.skip[j]) continue;
         s.state.F[p.index[j]] = laneOf(F, j);
         s.state.cauchy[p.index[j]] = laneOf(cauchy, j);
     }
-    storeFactors(model, s, p, F, cauchy, L.trace(), &point);
+    const double c = model.waveSpeed(MaterialPoint{});
+    storeFactors(model.elastic().density, s, p, F, cauchy, L.trace(),
+                 [c](const T&) { return T{} + c; });
     for (int j = 0; j < p.kWidth; ++j)
-        if (!p.skip[j])
-            storeHourglassScale(model, s, p.index[j], s.state.cauchy[p.index[j]],
-                                point.plasticStrain);
+        if (!p.skip[j]) storeHourglassScale(model, s, p.index[j], s.state.cauchy[p.index[j]], 0.0);
 }
 
-// The block's particles strip by strip (strip type T).
-template <class Model, class T>
-[[gnu::always_inline]] inline void advanceBlockStrips(const Model& model, KinematicsStep& s,
-                                                      const ParticleBlock& block,
-                                                      const BlockThetaGradients& g) {
-    constexpr int width = kLanesOf<T>;
-    for (Index i0 = 0; i0 < block.size(); i0 += width) {
-        const StripParticles<T> p(
-            block, i0, static_cast<int>(std::min<Index>(width, block.size() - i0)), s.bonds);
-        advanceStrip(model, s, p, g);
+// A block's F, L and sound speed by row, between the stages of a model that updates one
+// particle at a time (below).
+// (J: det F for the material update; factorsDensity: ρ0/J as storeFactors takes it.)
+struct BlockKinematics {
+    double F[9][kMaxBlock], D[9][kMaxBlock], W[9][kMaxBlock];
+    double J[kMaxBlock], factorsDensity[kMaxBlock], soundSpeed[kMaxBlock];
+};
+
+// Stage 1 for a strip: F, D, W and the two densities' J into the block's rows.
+template <class T>
+[[gnu::always_inline]] inline void kinematicsStrip(double density0, KinematicsStep& s,
+                                                   const StripParticles<T>& p,
+                                                   const BlockThetaGradients& g,
+                                                   BlockKinematics& k) {
+    StripMat3<T> F, L;
+    stripKinematics(s, p, g, F, L);
+    const StripMat3<T> D = 0.5 * (L + L.transpose());
+    const StripMat3<T> W = 0.5 * (L - L.transpose());
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            p.storeRows(k.F[3 * r + c], F(r, c));
+            p.storeRows(k.D[3 * r + c], D(r, c));
+            p.storeRows(k.W[3 * r + c], W(r, c));
+        }
+    p.storeRows(k.J, determinant(F));
+    p.storeRows(k.factorsDensity, density0 / factorsJ(F, cofactor(F)));
+}
+
+// Stage 3 for a strip: the force factors from F, σ_{n+1} and the sound speeds of stage 2.
+template <class T>
+[[gnu::always_inline]] inline void factorsStrip(double density0, KinematicsStep& s,
+                                                const StripParticles<T>& p,
+                                                const BlockKinematics& k) {
+    StripMat3<T> F;
+    for (int rc = 0; rc < 9; ++rc) F(rc / 3, rc % 3) = p.ofRows(k.F[rc]);
+    // tr L = tr D: D's diagonal is L's (½ (l + l) is l exactly).
+    const T trL = (p.ofRows(k.D[0]) + p.ofRows(k.D[4])) + p.ofRows(k.D[8]);
+    const T soundSpeed = p.ofRows(k.soundSpeed);
+    storeFactors(density0, s, p, F, p.of(s.state.cauchy.data()), trL,
+                 [&soundSpeed](const T&) { return soundSpeed; });
+}
+
+// Stage 2, one particle (row i of the block): the material update from D and W, σ_{n+1}, the
+// history, and the sound speed at the density the factors take.
+template <class Model>
+void updateParticle(const Model& model, KinematicsStep& s, std::size_t ia, Index i,
+                    BlockKinematics& k) {
+    Mat3 F, D, W;
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c)
+            F(r, c) = k.F[3 * r + c][i], D(r, c) = k.D[3 * r + c][i], W(r, c) = k.W[3 * r + c][i];
+    const double J = k.J[i];
+    MaterialPoint point;
+    point.cauchy = s.state.cauchy[ia];
+    point.density = model.elastic().density / J;
+    if constexpr (kHasHistory<Model>) {
+        loadHistory<Model>(s.state, ia, point);
+        if (!s.averagedDriver.empty()) point.averagedDriver = s.averagedDriver[ia];
+        point.size = s.ref.spacing[ia];
     }
+    model.update(point, D, W, s.dt);
+    if constexpr (kHasHistory<Model>) {
+        storeHistory<Model>(point, ia, s.state);
+        // Per current volume → per particle: V J (the particle's current volume).
+        const double volume = s.ref.quadVolume[ia] * J;
+        s.state.plasticWork[ia] += volume * point.plasticWork;
+        s.damageDissipation[ia] = volume * point.damageDissipation;
+    }
+    s.state.F[ia] = F;
+    s.state.cauchy[ia] = point.cauchy;
+    point.density = k.factorsDensity[i];
+    k.soundSpeed[i] = model.waveSpeed(point);
+    storeHourglassScale(model, s, ia, point.cauchy, point.plasticStrain);
+}
+
+// fn(p) for the block's strips of type T in order.
+template <class T, class Fn>
+[[gnu::always_inline]] inline void forStrips(KinematicsStep& s, const ParticleBlock& block,
+                                             const Fn& fn) {
+    constexpr int width = kLanesOf<T>;
+    for (Index i0 = 0; i0 < block.size(); i0 += width)
+        fn(StripParticles<T>(block, i0, static_cast<int>(std::min<Index>(width, block.size() - i0)),
+                             s.bonds));
     leaveLanes<T>();
+}
+
+// The strip loops, compiled for each width (the same bits at every width).
+template <class T>
+[[gnu::always_inline]] inline void elasticStrips(const HypoElastic& model, KinematicsStep& s,
+                                                 const ParticleBlock& block,
+                                                 const BlockThetaGradients& g) {
+    forStrips<T>(
+        s, block, [&](const StripParticles<T>& p) __attribute__((always_inline)) {
+            advanceElasticStrip(model, s, p, g);
+        });
+}
+template <class T>
+[[gnu::always_inline]] inline void kinematicsStrips(double density0, KinematicsStep& s,
+                                                    const ParticleBlock& block,
+                                                    const BlockThetaGradients& g,
+                                                    BlockKinematics& k) {
+    forStrips<T>(
+        s, block, [&](const StripParticles<T>& p) __attribute__((always_inline)) {
+            kinematicsStrip(density0, s, p, g, k);
+        });
+}
+template <class T>
+[[gnu::always_inline]] inline void factorsStrips(double density0, KinematicsStep& s,
+                                                 const ParticleBlock& block,
+                                                 const BlockKinematics& k) {
+    forStrips<T>(
+        s, block, [&](const StripParticles<T>& p) __attribute__((always_inline)) {
+            factorsStrip(density0, s, p, k);
+        });
 }
 
 GSPH_AVX512_TARGET void avx512ElasticStrips(const HypoElastic& model, KinematicsStep& s,
                                             const ParticleBlock& block,
                                             const BlockThetaGradients& g) {
-    advanceBlockStrips<HypoElastic, Lanes8>(model, s, block, g);
+    elasticStrips<Lanes8>(model, s, block, g);
 }
 GSPH_AVX2_TARGET void avx2ElasticStrips(const HypoElastic& model, KinematicsStep& s,
                                         const ParticleBlock& block, const BlockThetaGradients& g) {
-    advanceBlockStrips<HypoElastic, Lanes4>(model, s, block, g);
+    elasticStrips<Lanes4>(model, s, block, g);
 }
 void sse2ElasticStrips(const HypoElastic& model, KinematicsStep& s, const ParticleBlock& block,
                        const BlockThetaGradients& g) {
-    advanceBlockStrips<HypoElastic, Lanes2>(model, s, block, g);
+    elasticStrips<Lanes2>(model, s, block, g);
+}
+GSPH_AVX512_TARGET void avx512KinematicsStrips(double density0, KinematicsStep& s,
+                                               const ParticleBlock& block,
+                                               const BlockThetaGradients& g, BlockKinematics& k) {
+    kinematicsStrips<Lanes8>(density0, s, block, g, k);
+}
+GSPH_AVX2_TARGET void avx2KinematicsStrips(double density0, KinematicsStep& s,
+                                           const ParticleBlock& block, const BlockThetaGradients& g,
+                                           BlockKinematics& k) {
+    kinematicsStrips<Lanes4>(density0, s, block, g, k);
+}
+void sse2KinematicsStrips(double density0, KinematicsStep& s, const ParticleBlock& block,
+                          const BlockThetaGradients& g, BlockKinematics& k) {
+    kinematicsStrips<Lanes2>(density0, s, block, g, k);
+}
+GSPH_AVX512_TARGET void avx512FactorsStrips(double density0, KinematicsStep& s,
+                                            const ParticleBlock& block, const BlockKinematics& k) {
+    factorsStrips<Lanes8>(density0, s, block, k);
+}
+GSPH_AVX2_TARGET void avx2FactorsStrips(double density0, KinematicsStep& s,
+                                        const ParticleBlock& block, const BlockKinematics& k) {
+    factorsStrips<Lanes4>(density0, s, block, k);
+}
+void sse2FactorsStrips(double density0, KinematicsStep& s, const ParticleBlock& block,
+                       const BlockKinematics& k) {
+    factorsStrips<Lanes2>(density0, s, block, k);
 }
 
-// Steps 3–4 for every particle of a block but the detached ones: across lanes for a model that
-// updates in strips (the widest the processor has: the same bits at every width), else one
-// particle at a time.
+// Steps 3–4 for every particle of a block but the detached ones, the widest strips the
+// processor has (the same bits at every width): the hypo-elastic model across lanes throughout;
+// a model with history in three stages, F and L in strips, the material update one particle at
+// a time (its return mapping branches per particle), the force factors in strips.
 template <class Model>
 void advanceBlock(const Model& model, KinematicsStep& s, const ParticleBlock& block,
                   const BlockThetaGradients& g) {
+    const int width = laneWidth();
     if constexpr (kUpdatesInStrips<Model>) {
-        switch (laneWidth()) {
-            case 8:
-                avx512ElasticStrips(model, s, block, g);
-                return;
-            case 4:
-                avx2ElasticStrips(model, s, block, g);
-                return;
-            default:
-                sse2ElasticStrips(model, s, block, g);
-                return;
-        }
+        if (width >= 8)
+            avx512ElasticStrips(model, s, block, g);
+        else if (width >= 4)
+            avx2ElasticStrips(model, s, block, g);
+        else
+            sse2ElasticStrips(model, s, block, g);
     } else {
-        advanceBlockStrips<Model, double>(model, s, block, g);
+        const double density0 = model.elastic().density;
+        BlockKinematics k;
+        if (width >= 8)
+            avx512KinematicsStrips(density0, s, block, g, k);
+        else if (width >= 4)
+            avx2KinematicsStrips(density0, s, block, g, k);
+        else
+            sse2KinematicsStrips(density0, s, block, g, k);
+        for (Index i = 0; i < block.size(); ++i) {
+            const Index a = block.particle(i);
+            if (!s.bonds.detached(a)) updateParticle(model, s, static_cast<std::size_t>(a), i, k);
+        }
+        if (width >= 8)
+            avx512FactorsStrips(density0, s, block, k);
+        else if (width >= 4)
+            avx2FactorsStrips(density0, s, block, k);
+        else
+            sse2FactorsStrips(density0, s, block, k);
     }
 }
 
@@ -393,8 +529,11 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
             }
             MaterialPoint point;
             point.cauchy = s.state.cauchy[ia];
-            storeFactors(model, s, StripParticles<double>(block, i, 1, s.bonds),
-                         stripOf(s.state.F[ia]), stripOf(point.cauchy), 0.0, &point);
+            storeFactors(model.elastic().density, s, StripParticles<double>(block, i, 1, s.bonds),
+                         stripOf(s.state.F[ia]), stripOf(point.cauchy), 0.0, [&](double density) {
+                             point.density = density;
+                             return model.waveSpeed(point);
+                         });
             // A restart resumes with the scale its plastic strain gives.
             if (!s.state.plasticStrain.empty())
                 storeHourglassScale(model, s, ia, point.cauchy, s.state.plasticStrain[ia]);

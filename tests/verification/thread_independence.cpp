@@ -211,12 +211,16 @@ TEST(ThreadIndependence, ContactRunsAreBitIdenticalToo) {
 // reported as skipped, not passed.
 class StripWidth : public ::testing::TestWithParam<int> {};
 
-TEST_P(StripWidth, GivesBitIdenticalStates) {
-    const int width = GetParam();
+bool hasLanes(int width) {
     limitLanes(width);
     const bool available = laneWidth() >= width;
     limitLanes(8);
-    if (!available) GTEST_SKIP() << "this processor has no " << width << "-lane strips";
+    return available;
+}
+
+TEST_P(StripWidth, GivesBitIdenticalStates) {
+    const int width = GetParam();
+    if (!hasLanes(width)) GTEST_SKIP() << "this processor has no " << width << "-lane strips";
     limitLanes(2);
     EnergyReport ep;
     const State portable = runWithThreads(1, &ep, kSteel);
@@ -229,6 +233,30 @@ TEST_P(StripWidth, GivesBitIdenticalStates) {
     EXPECT_TRUE(bitIdentical(wide.v, portable.v)) << width << " lanes";
     EXPECT_TRUE(bitIdentical(wide.cauchy, portable.cauchy)) << width << " lanes";
     EXPECT_TRUE(bitIdentical(wide.F, portable.F)) << width << " lanes";
+    EXPECT_EQ(std::memcmp(&wide.ledger, &portable.ledger, sizeof(EnergyLedger)), 0);
+}
+
+// Johnson–Cook with damage, heating and the Mie–Grüneisen pressure: F, L and the force factors
+// run in strips, the return mapping one particle at a time between them.
+TEST_P(StripWidth, GivesBitIdenticalPlasticStates) {
+    const int width = GetParam();
+    if (!hasLanes(width)) GTEST_SKIP() << "this processor has no " << width << "-lane strips";
+    const Material plastic = testing::softFailingSteel();
+    limitLanes(2);
+    EnergyReport ep;
+    const State portable = runWithThreads(1, &ep, plastic, 40);
+    limitLanes(width);
+    EnergyReport ew;
+    const State wide = runWithThreads(1, &ew, plastic, 40);
+    limitLanes(8);
+    EXPECT_GT(ep.plasticWork, 0.0);
+    EXPECT_TRUE(bitIdentical(wide.x, portable.x)) << width << " lanes";
+    EXPECT_TRUE(bitIdentical(wide.v, portable.v)) << width << " lanes";
+    EXPECT_TRUE(bitIdentical(wide.cauchy, portable.cauchy)) << width << " lanes";
+    EXPECT_TRUE(bitIdentical(wide.F, portable.F)) << width << " lanes";
+    EXPECT_TRUE(bitIdentical(wide.plasticStrain, portable.plasticStrain)) << width << " lanes";
+    EXPECT_TRUE(bitIdentical(wide.plasticWork, portable.plasticWork)) << width << " lanes";
+    EXPECT_TRUE(bitIdentical(wide.damage, portable.damage)) << width << " lanes";
     EXPECT_EQ(std::memcmp(&wide.ledger, &portable.ledger, sizeof(EnergyLedger)), 0);
 }
 
