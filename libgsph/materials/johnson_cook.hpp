@@ -68,17 +68,23 @@ inline double JohnsonCookStrength::rateFactor(double strainRate) const {
     const double ratio = strainRate / params_.referenceStrainRate;
     if (params_.rateForm == StrainRateForm::Power)
         return std::pow(1.0 + ratio, params_.strainRateCoefficient);
-    // Below the reference rate the logarithm would soften (and diverge at rest): no rate effect.
-    return 1.0 + params_.strainRateCoefficient * std::log(std::max(ratio, 1.0));
+    // Below the reference rate the logarithm would soften (and diverge at rest): no rate effect
+    // (ln 1 = 0 exactly, so the logarithm is skipped there: the same bits).
+    if (ratio <= 1.0) return 1.0;
+    return 1.0 + params_.strainRateCoefficient * std::log(ratio);
 }
 
 inline double JohnsonCookStrength::flowStress(double plasticStrain, double strainRate,
                                               double temperature) const {
     const JohnsonCookParams& p = params_;
+    // 0^n = 0 exactly (n > 0): a point that has not flowed, or is at room temperature, skips
+    // its power (the same bits).
     const double hardening =
-        p.yieldStress + p.hardeningModulus * std::pow(plasticStrain, p.hardeningExponent);
-    const double softening =
-        1.0 - std::pow(homologousTemperature(temperature), p.thermalSofteningExponent);
+        p.yieldStress +
+        p.hardeningModulus *
+            (plasticStrain == 0.0 ? 0.0 : std::pow(plasticStrain, p.hardeningExponent));
+    const double Tstar = homologousTemperature(temperature);
+    const double softening = Tstar == 0.0 ? 1.0 : 1.0 - std::pow(Tstar, p.thermalSofteningExponent);
     return hardening * rateFactor(strainRate) * softening;
 }
 
