@@ -4,8 +4,8 @@
     split_runs.py --mpi-solve BUILD-MPI/solver/gsph-solve --preproc .../gsph-preproc
                   --serial-solve BUILD/solver/gsph-solve --source SOURCE_DIR --out DIR
 
-The quick start's Taylor bar (coarse O-grid, overset band, rigid wall, Johnson-Cook) to its
-end time (80 us): with the serial gsph-solve on 2 threads, then with `mpirun -np N` for
+The Taylor bar on the quick start's coarse O-grid without its lip grading (overset band, rigid
+wall, Johnson-Cook) to its end time (80 us): with the serial gsph-solve on 2 threads, then with `mpirun -np N` for
 N = 2, 3, 4 (oversubscribed on a small machine, one thread each; one process under mpirun is
 the restart below). Asserts
   - every snapshot: every dataset byte for byte equal to the serial run's;
@@ -201,7 +201,7 @@ def main():
         sys.exit("split_runs: gsph-preproc failed")
     # The serial runs: the threaded serial build.
     env = dict(os.environ, OMP_NUM_THREADS="2")
-    faults, serial = split_like_serial(a, "quick_start", case, ["--particles", particles], env)
+    faults, serial = split_like_serial(a, "taylor_ogrid", case, ["--particles", particles], env)
     if serial is None:
         sys.exit("split_runs: " + faults[0])
     # Contact between bodies (a search in the current configuration over every particle): the
