@@ -238,10 +238,8 @@ void storeHourglassScale(const Model& model, KinematicsStep& s, std::size_t ia, 
             : 1.0;
 }
 
-// Steps 3–4 for the particles of a strip from their θ-gradients
-// (kinematics/deformation_gradient.hpp): F, Ḟ, L = Ḟ F_{n+½}^{-1}, the material update, then the
-// force factors. Lanes marked skip are computed and not stored.
-// F and L = Ḟ F_{n+½}^{-1} of a strip's particles at t_{n+1}.
+// Step 3 for the particles of a strip from their θ-gradients (kinematics/deformation_gradient.hpp):
+// F and L = Ḟ F_{n+½}^{-1} at t_{n+1}. Lanes marked skip are computed and not stored.
 template <class T>
 [[gnu::always_inline]] inline void stripKinematics(KinematicsStep& s, const StripParticles<T>& p,
                                                    const BlockThetaGradients& g, StripMat3<T>& F,
@@ -285,8 +283,9 @@ template <class T>
         s.state.cauchy[p.index[j]] = laneOf(cauchy, j);
     }
     const double c = model.waveSpeed(MaterialPoint{});
-    storeFactors(model.elastic().density, s, p, F, cauchy, L.trace(),
-                 [c](const T&) { return T{} + c; });
+    storeFactors(
+        model.elastic().density, s, p, F, cauchy,
+        L.trace(), [c](const T&) __attribute__((always_inline)) { return T{} + c; });
     for (int j = 0; j < p.kWidth; ++j)
         if (!p.skip[j]) storeHourglassScale(model, s, p.index[j], s.state.cauchy[p.index[j]], 0.0);
 }
@@ -329,8 +328,9 @@ template <class T>
     // tr L = tr D: D's diagonal is L's (½ (l + l) is l exactly).
     const T trL = (p.ofRows(k.D[0]) + p.ofRows(k.D[4])) + p.ofRows(k.D[8]);
     const T soundSpeed = p.ofRows(k.soundSpeed);
-    storeFactors(density0, s, p, F, p.of(s.state.cauchy.data()), trL,
-                 [&soundSpeed](const T&) { return soundSpeed; });
+    storeFactors(
+        density0, s, p, F, p.of(s.state.cauchy.data()),
+        trL, [&soundSpeed](const T&) __attribute__((always_inline)) { return soundSpeed; });
 }
 
 // Stage 2, one particle (row i of the block): the material update from D and W, σ_{n+1}, the
