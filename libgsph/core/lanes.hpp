@@ -14,9 +14,11 @@
 // strip kernels and the one-pair-at-a-time CSR path alike.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
+#include <utility>
 
 // The strip types never cross a function boundary that is not inlined (the kernels are
 // always_inline inside their target function), so the ABI note on AVX vectors does not apply.
@@ -126,6 +128,44 @@ template <class L>
     L v;
     for (int j = 0; j < kLanesOf<L>; ++j) v[j] = p[index[j]];
     return v;
+}
+
+/// r[0] … r[W − 1] (W = the strip's width) transposed in registers: afterwards lane j of r[k]
+/// is what lane k of r[j] was. log2 W rounds of two-vector shuffles; round d exchanges the
+/// off-diagonal d × d blocks (lane p of row i, p & d set, with lane p − d of row i + d).
+template <int D, class L, int... P>
+[[gnu::always_inline]] inline void transposeRound(L* r, std::integer_sequence<int, P...>) {
+    constexpr int W = kLanesOf<L>;
+    typedef std::int64_t Mask __attribute__((vector_size(sizeof(L))));
+    const Mask low = {((P & D) == 0 ? P : W + P - D)...};
+    const Mask high = {((P & D) == 0 ? P + D : W + P)...};
+    for (int i = 0; i < W; ++i)
+        if ((i & D) == 0) {
+            const L a = r[i], b = r[i + D];
+            r[i] = __builtin_shuffle(a, b, low);
+            r[i + D] = __builtin_shuffle(a, b, high);
+        }
+}
+template <class L>
+[[gnu::always_inline]] inline void transposeLanes(L* r) {
+    constexpr auto lanes = std::make_integer_sequence<int, kLanesOf<L>>{};
+    transposeRound<1>(r, lanes);
+    if constexpr (kLanesOf < L >> 2) transposeRound<2>(r, lanes);
+    if constexpr (kLanesOf < L >> 4) transposeRound<4>(r, lanes);
+}
+
+/// Columns first … first + W − 1 of the rows index[0] … index[W − 1] of a row-major table of
+/// `rowLength` doubles a row, W = the strip's width: out[k], lane j = table[index[j]][first + k].
+/// W loads and a transposition in registers; where a pair loop reads many fields of the same
+/// far ends, this replaces W gathers of one field each (on this project's machine a gather
+/// costs about what a whole transposed load of W fields does, docs/performance.md).
+template <class L>
+[[gnu::always_inline]] inline void loadColumns(const double* table, std::size_t rowLength,
+                                               const std::int32_t* index, std::size_t first,
+                                               L* out) {
+    for (int j = 0; j < kLanesOf<L>; ++j)
+        out[j] = loadLanes<L>(table + static_cast<std::size_t>(index[j]) * rowLength + first);
+    transposeLanes(out);
 }
 
 /// The SIMD lanes of the pair loops that run across one particle's pairs (neighbors/

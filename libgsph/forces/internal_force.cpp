@@ -27,6 +27,10 @@ struct ForceView {
     const double *h, *c, *rho, *alpha, *hourglassScale, *V;
     const KernelEntry* table;
     const CsrPairWeights* staged;  // null: stage every CSR particle's pairs each time
+    // The CSR pair groups read the neighbours' fields by slot (forces/pair_field_rows.hpp): the
+    // same component pointers as above, from the SoA fields, or from the rows.
+    std::array<const double*, kPairSlots> slot;
+    const double* rows;  // null: the gathered runs gather from the SoA fields
     ViscosityCoefficients viscosity;
     double alphaE;  // α E of the hourglass penalty [Pa]
 };
@@ -264,15 +268,12 @@ struct RunWeights {
     [[gnu::always_inline]] void transposed(L (&w)[3]) const { at.vec(st.wT, w); }
     [[gnu::always_inline]] void viscous(L (&w)[3]) const { at.vec(st.gQ, w); }
     [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { at.vec(st.gN, w); }
-    [[gnu::always_inline]] L hBar(const ForceView&, const PairCentre<L>&, auto&&) const {
-        return at.scalar(st.hBar);
-    }
-    [[gnu::always_inline]] void offset(const ForceView&, const PairCentre<L>&, auto&&, L (&Y)[3],
-                                       L& Y2) const {
+    [[gnu::always_inline]] L hBar(const PairCentre<L>&, auto&&) const { return at.scalar(st.hBar); }
+    [[gnu::always_inline]] void offset(const PairCentre<L>&, auto&&, L (&Y)[3], L& Y2) const {
         at.vec(st.Y, Y);
         Y2 = at.scalar(st.Y2);
     }
-    [[gnu::always_inline]] L hourglassWeight(const ForceView&, const PairCentre<L>&, auto&&) const {
+    [[gnu::always_inline]] L hourglassWeight(const PairCentre<L>&, auto&&) const {
         return at.scalar(st.hgWeight);
     }
     [[gnu::always_inline]] L share() const { return at.scalar(st.share); }
@@ -290,37 +291,35 @@ struct StripWeights {
     [[gnu::always_inline]] void viscous(L (&w)[3]) const { at.vec(sp.g, w); }
     [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { at.vec(sp.g, w); }
     template <class Fetch>
-    [[gnu::always_inline]] L hBar(const ForceView& in, const PairCentre<L>& o,
-                                  const Fetch& fetch) const {
-        return 0.5 * (o.h + fetch(in.h));
+    [[gnu::always_inline]] L hBar(const PairCentre<L>& o, const Fetch& fetch) const {
+        return 0.5 * (o.h + fetch(kSlotSmoothingLength));
     }
     template <class Fetch>
-    [[gnu::always_inline]] void offset(const ForceView& in, const PairCentre<L>& o,
-                                       const Fetch& fetch, L (&Y)[3], L& Y2) const {
-        for (std::size_t r = 0; r < 3; ++r) Y[r] = fetch(in.X[r]) - o.X[r];
+    [[gnu::always_inline]] void offset(const PairCentre<L>& o, const Fetch& fetch, L (&Y)[3],
+                                       L& Y2) const {
+        for (int r = 0; r < 3; ++r) Y[r] = fetch(kSlotReferenceX + r) - o.X[r];
         Y2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
     }
     template <class Fetch>
-    [[gnu::always_inline]] L hourglassWeight(const ForceView& in, const PairCentre<L>& o,
-                                             const Fetch& fetch) const {
-        return 0.5 * (o.V + fetch(in.V)) * at.scalar(sp.W);
+    [[gnu::always_inline]] L hourglassWeight(const PairCentre<L>& o, const Fetch& fetch) const {
+        return 0.5 * (o.V + fetch(kSlotVolume)) * at.scalar(sp.W);
     }
     [[gnu::always_inline]] L share() const { return valid(); }
     [[gnu::always_inline]] L valid() const { return at.scalar(sp.valid); }
 };
 
 // The pair terms of one group of entries (one per lane) into s, the weights from `wt`
-// (RunWeights or StripWeights), the neighbours' fields through fetch(component array) (a
-// gather, or a contiguous load at a + δ). Lanes without a pair (valid 0) add nothing.
+// (RunWeights or StripWeights), the neighbours' fields through fetch(slot) (PairFieldSlot: a
+// contiguous load at a + δ, columns of the rows, or a gather). Lanes without a pair (valid 0)
+// add nothing.
 template <bool Viscous, int Hourglass, class L, class Weights, class Fetch>
 [[gnu::always_inline]] inline void pairGroup(const ForceView& in, const Weights& wt,
                                              const PairCentre<L>& o, const Fetch& fetch,
                                              PairSums<L>& s) {
-    const auto times = [&](const std::array<const double*, 9>& M, const L(&w)[3], L(&out)[3])
-        __attribute__((always_inline)) {
-        for (std::size_t r = 0; r < 3; ++r)
+    const auto times = [&](int M, const L(&w)[3], L(&out)[3]) __attribute__((always_inline)) {
+        for (int r = 0; r < 3; ++r)
             out[r] =
-                fetch(M[3 * r]) * w[0] + fetch(M[3 * r + 1]) * w[1] + fetch(M[3 * r + 2]) * w[2];
+                fetch(M + 3 * r) * w[0] + fetch(M + 3 * r + 1) * w[1] + fetch(M + 3 * r + 2) * w[2];
     };
     const MaskOf<L> valid = wt.valid() != 0.0;
     L w[3];
@@ -328,38 +327,37 @@ template <bool Viscous, int Hourglass, class L, class Weights, class Fetch>
     for (std::size_t r = 0; r < 3; ++r) s.sumW[r] += w[r];
     wt.transposed(w);
     L Kw[3];
-    times(in.K, w, Kw);
+    times(kSlotK, w, Kw);
     for (std::size_t r = 0; r < 3; ++r) s.fK[r] += Kw[r];
     L y[3];
-    for (std::size_t r = 0; r < 3; ++r) y[r] = fetch(in.x[r]) - o.x[r];
+    for (int r = 0; r < 3; ++r) y[r] = fetch(kSlotX + r) - o.x[r];
     const L y2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
     if constexpr (Viscous) {
         L vx{};
-        for (std::size_t r = 0; r < 3; ++r) vx += (o.v[r] - fetch(in.v[r])) * -y[r];
+        for (int r = 0; r < 3; ++r) vx += (o.v[r] - fetch(kSlotV + r)) * -y[r];
         if (anyNegative(vx)) {  // else q = 0 in every lane: nothing to add (the same bits)
             const L q = viscousPairPressure<L>(
-                in.viscosity, vx, y2, wt.hBar(in, o, fetch), 0.5 * (o.c + fetch(in.c)),
-                0.5 * (o.rho + fetch(in.rho)), 0.5 * (o.alpha + fetch(in.alpha)));
+                in.viscosity, vx, y2, wt.hBar(o, fetch), 0.5 * (o.c + fetch(kSlotSoundSpeed)),
+                0.5 * (o.rho + fetch(kSlotDensity)), 0.5 * (o.alpha + fetch(kSlotViscositySwitch)));
             wt.viscous(w);
             for (std::size_t r = 0; r < 3; ++r)
                 s.sumQW[r] = valid ? s.sumQW[r] + q * w[r] : s.sumQW[r];
             wt.viscousTransposed(w);
             L Nw[3];
-            times(in.N, w, Nw);
+            times(kSlotN, w, Nw);
             for (std::size_t r = 0; r < 3; ++r) s.fN[r] = valid ? s.fN[r] + q * Nw[r] : s.fN[r];
         }
     }
     if constexpr (Hourglass) {
         L Y[3], Y2;
-        wt.offset(in, o, fetch, Y, Y2);
-        L weight = wt.hourglassWeight(in, o, fetch);
+        wt.offset(o, fetch, Y, Y2);
+        L weight = wt.hourglassWeight(o, fetch);
         if constexpr (Hourglass == kSecantHourglass)
-            weight *= 0.5 * (o.s + fetch(in.hourglassScale));
+            weight *= 0.5 * (o.s + fetch(kSlotHourglassScale));
         L predicted{};
-        for (std::size_t r = 0; r < 3; ++r) {
+        for (int r = 0; r < 3; ++r) {
             L row{};
-            for (std::size_t k = 0; k < 3; ++k)
-                row += (o.F[3 * r + k] + fetch(in.F[3 * r + k])) * Y[k];
+            for (int k = 0; k < 3; ++k) row += (o.F[3 * r + k] + fetch(kSlotF + 3 * r + k)) * Y[k];
             predicted += row * y[r];
         }
         const L kappa = hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, y2, Y2, weight);
@@ -377,7 +375,9 @@ struct CsrSums {
 
 // A run of c's staged pairs [begin, begin + size) across kPairLanes lanes (pair j into lane
 // j mod kPairLanes), reduced in the fixed order of sumPairLanes, added into column i of out.
-template <bool Viscous, int Hourglass, class L>
+// FromRows: the neighbours' fields are read as columns of in.rows (every b is one of
+// CsrPairWeights::gathered), else gathered from the SoA fields; the same values either way.
+template <bool Viscous, int Hourglass, bool FromRows, class L>
 [[gnu::always_inline]] inline void gatheredPairs(const ForceView& in, const StagedPairs& st,
                                                  std::size_t begin, Index size, Index c, Index i,
                                                  CsrSums& out) {
@@ -391,11 +391,22 @@ template <bool Viscous, int Hourglass, class L>
         for (int u = 0; u < strips; ++u) {
             const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
             const Index* b = st.b.data() + j;
-            pairGroup<Viscous, Hourglass, L>(
-                in, RunWeights<L>{st, {st.stride, j}}, o,
-                [b](const double* p)
-                    __attribute__((always_inline)) { return gatherLanesAt<L>(p, b); },
-                s[u]);
+            const RunWeights<L> weights{st, {st.stride, j}};
+            if constexpr (FromRows) {
+                L column[kRowLength];
+                for (std::size_t first = 0; first < kRowLength; first += width)
+                    loadColumns<L>(in.rows, kRowLength, b, first, column + first);
+                pairGroup<Viscous, Hourglass, L>(
+                    in, weights,
+                    o, [&column](int slot) __attribute__((always_inline)) { return column[slot]; },
+                    s[u]);
+            } else {
+                pairGroup<Viscous, Hourglass, L>(
+                    in, weights, o, [&in, b ](int slot) __attribute__((always_inline)) {
+                        return gatherLanesAt<L>(in.slot[static_cast<std::size_t>(slot)], b);
+                    },
+                    s[u]);
+            }
         }
     const auto add = [&](L(PairSums<L>::*sum)[3], double(&column)[3][kMaxBlock])
         __attribute__((always_inline)) {
@@ -433,9 +444,9 @@ template <bool Viscous, int Hourglass, class L>
                     w.stripPairs,
                     {w.stripPairs.stride,
                      strip.base + static_cast<std::size_t>(e * kPairLanes + u * width)}},
-                o,
-                [ad](const double* p)
-                    __attribute__((always_inline)) { return loadLanes<L>(p + ad); },
+                o, [&in, ad ](int slot) __attribute__((always_inline)) {
+                    return loadLanes<L>(in.slot[static_cast<std::size_t>(slot)] + ad);
+                },
                 s);
         }
         const auto store = [&](const L(&sum)[3], double(&column)[3][kMaxBlock])
@@ -458,18 +469,25 @@ template <bool Viscous, int Hourglass, class L>
     stagedStrips(in.staged, bonds, block, afresh, [&](Index i, const MaskedStrip& strip) {
         maskedStrip<Viscous, Hourglass, L>(in, *in.staged, strip, i, s);
     });
+    // The rows hold the far ends of the CSR blocks' runs (not of a stencil block's here).
+    const bool fromRows = in.rows != nullptr && block.stencil == kNoStencil;
+    const auto run = [&](const StagedPairs& st, std::size_t begin, Index size, Index c, Index i)
+        __attribute__((always_inline)) {
+        if (fromRows)
+            gatheredPairs<Viscous, Hourglass, true, L>(in, st, begin, size, c, i, s);
+        else
+            gatheredPairs<Viscous, Hourglass, false, L>(in, st, begin, size, c, i, s);
+    };
     for (Index i = 0; i < len; ++i) {
         const Index c = block.particle(i);
         if (afresh[i]) {
             Index size = 0;
             const StagedPairs& st = stageIntoScratch(ref, bonds, c, size);
-            gatheredPairs<Viscous, Hourglass, L>(in, st, 0, size, c, i, s);
+            run(st, 0, size, c, i);
         } else {
             const CsrPairWeights& w = *in.staged;
             const auto ic = static_cast<std::size_t>(c);
-            gatheredPairs<Viscous, Hourglass, L>(in, w.pairs, w.begin[ic],
-                                                 static_cast<Index>(w.begin[ic + 1] - w.begin[ic]),
-                                                 c, i, s);
+            run(w.pairs, w.begin[ic], static_cast<Index>(w.begin[ic + 1] - w.begin[ic]), c, i);
         }
     }
     leaveLanes<L>();
@@ -540,7 +558,26 @@ void forceLoop(const ForceView& in, const Reference& ref, const StressFactors& s
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds,
-                   const Mat3* G, const CsrPairWeights* staged) {
+                   const Mat3* G, const CsrPairWeights* staged, PairFieldRows* rows) {
+    std::array<const double*, kPairSlots> slot{};
+    const auto place = [&](int first, const auto& columns) {
+        for (std::size_t k = 0; k < columns.size(); ++k)
+            slot[static_cast<std::size_t>(first) + k] = columns[k];
+    };
+    place(kSlotX, components(fields.x)), place(kSlotV, components(fields.v));
+    place(kSlotF, components(fields.F)), place(kSlotK, components(factors.K));
+    place(kSlotN, components(factors.N)), place(kSlotReferenceX, components(fields.X));
+    slot[kSlotSoundSpeed] = factors.soundSpeed.data(), slot[kSlotDensity] = factors.density.data();
+    slot[kSlotViscositySwitch] = factors.viscositySwitch.data();
+    slot[kSlotHourglassScale] = factors.hourglassScale.data();
+    slot[kSlotSmoothingLength] = ref.smoothingLength.data(),
+    slot[kSlotVolume] = ref.quadVolume.data();
+    const bool useRows = rows != nullptr && staged != nullptr && !staged->gathered.empty();
+    if (useRows) {
+        std::array<const double*, kRowFields> column;
+        std::copy_n(slot.begin(), kRowFields, column.begin());
+        rows->refresh(column, staged->gathered, static_cast<std::size_t>(ref.size()));
+    }
     const ForceView in{components(factors.K),
                        components(factors.N),
                        components(fields.F),
@@ -556,6 +593,8 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
                        ref.quadVolume.data(),
                        ref.pairs.table.data(),
                        staged,
+                       slot,
+                       useRows ? rows->data() : nullptr,
                        options.viscosity,
                        options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();

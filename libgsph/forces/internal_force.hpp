@@ -27,6 +27,7 @@
 #include "forces/artificial_viscosity.hpp"
 #include "forces/force_stage.hpp"  // ForceParts
 #include "forces/hourglass.hpp"
+#include "forces/pair_field_rows.hpp"
 #include "neighbors/staged_pairs.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
@@ -81,10 +82,13 @@ struct ForceOptions {
 /// Broken bonds (`bonds`) leave every pair term; a block with a damaged particle takes the
 /// CSR path, and so do particles with interface weight corrections (ref.pairCorrections), which
 /// apply while a particle keeps all its bonds. G per particle from `G` (null: ref.G). `staged`:
-/// the body's CsrPairWeights (null: staged here each time; same result).
+/// the body's CsrPairWeights (null: staged here each time; same result). `rows`: with `staged`,
+/// refreshed here for staged->gathered and read by the CSR blocks' gathered runs (null: they
+/// gather from the SoA fields; the same result).
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds = {},
-                   const Mat3* G = nullptr, const CsrPairWeights* staged = nullptr);
+                   const Mat3* G = nullptr, const CsrPairWeights* staged = nullptr,
+                   PairFieldRows* rows = nullptr);
 
 }  // namespace gsph

@@ -35,7 +35,7 @@ StageReport InternalForceStage::addForces(const State& state, ForceChannels& out
         options.youngsModulus = youngsModulus_[b];
         options.hourglassModulus = modulus_;
         internalForce(ref_, fields_, factors_, blocks_[b], options, out.force, out.parts,
-                      bonds_.view(state), bonds_.G().data(), &staged_[b]);
+                      bonds_.view(state), bonds_.G().data(), &staged_[b], &rows_);
     }
     return {};
 }

@@ -4,7 +4,8 @@
 // forces/internal_force.hpp over its stencil and CSR blocks, from the factors K, N and the SoA
 // fields the kinematics stage left (integrator/stress_update.hpp). It sets `force` (every
 // particle belongs to one body), so later stages add to it; viscosity and hourglass control
-// write their parts into the viscous and hourglass channels for the energy ledger.
+// write their parts into the viscous and hourglass channels for the energy ledger. The CSR
+// blocks' gathered runs read their far ends' fields from rows (forces/pair_field_rows.hpp).
 #pragma once
 
 #include <vector>
@@ -44,6 +45,7 @@ class InternalForceStage final : public ForceStage {
     double hourglass_;
     HourglassModulus modulus_;
     const BrittleBonds& bonds_;
+    PairFieldRows rows_;  ///< the gathered runs' far ends, refreshed body by body
 };
 
 }  // namespace gsph

@@ -163,7 +163,7 @@ const StagedPairs& stageIntoScratch(const Reference& ref, const BondView& bonds,
 std::size_t CsrPairWeights::bytes() const {
     return begin.size() * sizeof(std::size_t) + stripAt.size() * sizeof(Index) +
            strips.size() * sizeof(MaskedStrip) + delta.size() * sizeof(Index) +
-           pairs.stride * (sizeof(Index) + 19 * sizeof(double)) +
+           gathered.size() * sizeof(Index) + pairs.stride * (sizeof(Index) + 19 * sizeof(double)) +
            stripPairs.stride * 11 * sizeof(double);
 }
 
@@ -223,6 +223,22 @@ CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks) 
             stageRest(ref, BondView{}, a, taken.data(), out.pairs,
                       out.begin[static_cast<std::size_t>(a)]);
     });
+    std::vector<std::uint8_t> read(un, 0);
+    for (const ParticleBlock& block : blocks.blocks)
+        if (block.stencil == kNoStencil)
+            for (Index i = 0; i < block.size(); ++i) {
+                const Index c = block.particle(i);
+                const auto ic = static_cast<std::size_t>(c);
+                read[ic] = 1;
+                for (Index k = P.begin(c); k < P.end(c); ++k)
+                    read[static_cast<std::size_t>(P.neighbor[static_cast<std::size_t>(k)])] = 1;
+                if (!ref.crossOffset.empty())
+                    for (Index slot = ref.crossOffset[ic]; slot < ref.crossOffset[ic + 1]; ++slot)
+                        read[static_cast<std::size_t>(
+                            ref.crossOwner[static_cast<std::size_t>(slot)])] = 1;
+            }
+    for (Index a = 0; a < n; ++a)
+        if (read[static_cast<std::size_t>(a)] != 0) out.gathered.push_back(a);
     out.stripPairs.resize(entries);  // zeros: no pair
     parallelFor(static_cast<Index>(out.strips.size()), [&](Index t) {
         const MaskedStrip& strip = out.strips[static_cast<std::size_t>(t)];

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The CSR path of the internal force and of F's θ-gradients runs in SIMD lanes from staged pairs
 // (neighbors/staged_pairs.hpp): staged once (masked strips and gathered runs) or staged at each
-// call (gathered runs). On two overset blocks (cross pairs, interface corrections, mirrors) with
-// every particle on the CSR path and random fields, each gives the same bits at every strip
-// width, and each equals the pair formulas of DESIGN §4 summed one pair at a time (written out
-// here) to round-off.
+// call (gathered runs), the runs' far ends gathered from the SoA fields or read as rows
+// (forces/pair_field_rows.hpp). On two overset blocks (cross pairs, interface corrections,
+// mirrors) with every particle on the CSR path and random fields, each gives the same bits at
+// every strip width (rows or not), and each equals the pair formulas of DESIGN §4 summed one pair
+// at a time (written out here) to round-off.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -61,12 +62,13 @@ struct Fixture {
     }
 
     std::vector<Vec3> force(const CsrPairWeights* staged, ForceParts& parts,
-                            const BondView& bonds = {}, const Mat3* G = nullptr) const {
+                            const BondView& bonds = {}, const Mat3* G = nullptr,
+                            PairFieldRows* rows = nullptr) const {
         const auto n = static_cast<std::size_t>(t.ref.size());
         std::vector<Vec3> f(n);
         parts.viscous.assign(n, Vec3::Zero());
         parts.hourglass.assign(n, Vec3::Zero());
-        internalForce(t.ref, fields, factors, blocks, options, f, parts, bonds, G, staged);
+        internalForce(t.ref, fields, factors, blocks, options, f, parts, bonds, G, staged, rows);
         return f;
     }
 
@@ -168,6 +170,17 @@ TEST_P(CsrPairLanes, StagedOnceOrEachCallEqualThePairFormulasWithTheSameBitsAtEv
             EXPECT_TRUE(sameBits(parts.viscous, parts2.viscous));
             EXPECT_TRUE(sameBits(parts.hourglass, parts2.hourglass));
         }
+        if (w != nullptr)  // the runs' far ends read as rows: the same bits at every width
+            for (int width : {2, 4, 8}) {
+                limitLanes(width);
+                if (laneWidth() < width) continue;
+                PairFieldRows rows;
+                ForceParts parts;
+                EXPECT_TRUE(sameBits(fx.force(w, parts, {}, nullptr, &rows), portable))
+                    << width << " lanes, rows";
+                EXPECT_TRUE(sameBits(parts.viscous, parts2.viscous));
+                EXPECT_TRUE(sameBits(parts.hourglass, parts2.hourglass));
+            }
         limitLanes(8);
         const double worst = worstAgainst(plain, portable);
         std::printf(
@@ -176,6 +189,8 @@ TEST_P(CsrPairLanes, StagedOnceOrEachCallEqualThePairFormulasWithTheSameBitsAtEv
             w != nullptr ? "once" : "each call", staged.strips.size(), worst);
         EXPECT_LT(worst, 3e-15);
     }
+    EXPECT_EQ(staged.gathered.size(), static_cast<std::size_t>(fx.t.ref.size()))
+        << "every particle is on the CSR path, so every one may be read";
     std::printf("[csr lanes] %d particles, %zu cross pairs: bit-identical at %d strip widths\n",
                 fx.t.ref.size(), fx.t.ref.crossPair.size(), widths);
 }
@@ -211,11 +226,16 @@ TEST(CsrPairLanes, OnlyParticlesNearABrokenBondStageTheirPairsAfresh) {
     ForceParts parts;
     const std::vector<Vec3> afresh = fx.force(nullptr, parts, view, bonds.G().data());
     const std::vector<Vec3> portable = fx.force(&staged, parts, view, bonds.G().data());
-    for (int width : {4, 8}) {
+    for (int width : {2, 4, 8}) {
         limitLanes(width);
         if (laneWidth() < width) continue;
-        EXPECT_TRUE(sameBits(fx.force(&staged, parts, view, bonds.G().data()), portable))
-            << width << " lanes";
+        if (width > 2) {
+            EXPECT_TRUE(sameBits(fx.force(&staged, parts, view, bonds.G().data()), portable))
+                << width << " lanes";
+        }
+        PairFieldRows rows;
+        EXPECT_TRUE(sameBits(fx.force(&staged, parts, view, bonds.G().data(), &rows), portable))
+            << width << " lanes, rows";
     }
     limitLanes(8);
     const double worst = worstAgainst(afresh, portable);
