@@ -9,7 +9,8 @@
 // Speed: particles in stencil blocks (neighbors/stencil_blocks.hpp) run the pair
 // terms stencil entry by stencil entry across the block on SoA fields, vectorised across
 // particles; the other particles take their CSR lists, staged as SoA weights
-// (neighbors/staged_pairs.hpp) and vectorised across each particle's pairs. Both evaluate the
+// (neighbors/staged_pairs.hpp) and vectorised across each particle's pairs (their far ends'
+// fields read as rows, forces/pair_field_rows.hpp). Both evaluate the
 // same pair formulas (forces/artificial_viscosity.hpp, forces/hourglass.hpp) in fixed orders; the
 // block a particle belongs to is fixed at setup, so results stay independent of the thread count
 // and the strip width. Allocation-free once the per-thread staging buffers have grown.
