@@ -50,6 +50,15 @@ int laneWidth();
 /// thread-safe, call before a run.
 void limitLanes(int width);
 
+/// The variant of a strip loop compiled for the widest strips the processor has (laneWidth()),
+/// at most `fits` lanes wide (a stencil block shorter than 8 particles takes 4): its AVX-512F,
+/// AVX2 or SSE2 instance.
+template <class Fn>
+Fn* widestVariant(Fn* avx512, Fn* avx2, Fn* sse2, int fits = 8) {
+    const int width = laneWidth();
+    return width >= 8 && fits >= 8 ? avx512 : width >= 4 ? avx2 : sse2;
+}
+
 /// Call at the end of the strip loops of type L (before scalar code or a return). For Lanes4
 /// and Lanes8 this clears the upper halves of the AVX registers, which otherwise slow down the SSE
 /// code that follows (measured: the CSR path 3× slower) and which GCC does not clear around the

@@ -529,27 +529,21 @@ template <bool Viscous, int Hourglass>
 void forceLoop(const ForceView& in, const Reference& ref, const StressFactors& sf,
                const StencilBlocks& blocks, const BondView& bonds, std::vector<Vec3>& force,
                ForceParts& parts) {
-    const int width = laneWidth();
+    const auto csrForce =
+        widestVariant(avx512CsrForce<Viscous, Hourglass>, avx2CsrForce<Viscous, Hourglass>,
+                      portableCsrForce<Viscous, Hourglass>);
     parallelForBlocks(blocks.cost, [&](std::ptrdiff_t k) {
         const ParticleBlock& block = blocks.blocks[static_cast<std::size_t>(k)];
         if (block.stencil != kNoStencil && bonds.allIntact(block.begin, block.end)) {
             const Stencil& st = blocks.stencils[static_cast<std::size_t>(block.stencil)];
-            if (width >= 8 && block.size() >= 8)
-                avx512BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
-            else if (width >= 4)
-                avx2BlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
-            else
-                portableBlockForce<Viscous, Hourglass>(in, sf, st, block, force, parts);
+            widestVariant(avx512BlockForce<Viscous, Hourglass>, avx2BlockForce<Viscous, Hourglass>,
+                          portableBlockForce<Viscous, Hourglass>,
+                          block.size())(in, sf, st, block, force, parts);
             return;
         }
         // A block of stencil particles with a broken bond takes the CSR path too (stride > 1
         // included); ParticleBlock::particle walks it either way.
-        if (width >= 8)
-            avx512CsrForce<Viscous, Hourglass>(in, ref, sf, bonds, block, force, parts);
-        else if (width >= 4)
-            avx2CsrForce<Viscous, Hourglass>(in, ref, sf, bonds, block, force, parts);
-        else
-            portableCsrForce<Viscous, Hourglass>(in, ref, sf, bonds, block, force, parts);
+        csrForce(in, ref, sf, bonds, block, force, parts);
     });
 }
 

@@ -447,13 +447,6 @@ void sse2FactorsStrips(double density0, KinematicsStep& s, const ParticleBlock& 
     factorsStrips<Lanes2>(density0, s, block, k);
 }
 
-// The variant of a strip loop compiled for the widest strips the processor has.
-template <class Fn>
-Fn* widest(Fn* avx512, Fn* avx2, Fn* sse2) {
-    const int width = laneWidth();
-    return width >= 8 ? avx512 : width >= 4 ? avx2 : sse2;
-}
-
 // Steps 3–4 for every particle of a block but the detached ones, the widest strips the
 // processor has (the same bits at every width): the hypo-elastic model across lanes throughout;
 // a model with history in three stages, F and L in strips, the material update one particle at
@@ -462,17 +455,19 @@ template <class Model>
 void advanceBlock(const Model& model, KinematicsStep& s, const ParticleBlock& block,
                   const BlockThetaGradients& g) {
     if constexpr (kUpdatesInStrips<Model>) {
-        widest(avx512ElasticStrips, avx2ElasticStrips, sse2ElasticStrips)(model, s, block, g);
+        widestVariant(avx512ElasticStrips, avx2ElasticStrips, sse2ElasticStrips)(model, s, block,
+                                                                                 g);
     } else {
         const double density0 = model.elastic().density;
         BlockKinematics k;
-        widest(avx512KinematicsStrips, avx2KinematicsStrips, sse2KinematicsStrips)(density0, s,
-                                                                                   block, g, k);
+        widestVariant(avx512KinematicsStrips, avx2KinematicsStrips, sse2KinematicsStrips)(
+            density0, s, block, g, k);
         for (Index i = 0; i < block.size(); ++i) {
             const Index a = block.particle(i);
             if (!s.bonds.detached(a)) updateParticle(model, s, static_cast<std::size_t>(a), i, k);
         }
-        widest(avx512FactorsStrips, avx2FactorsStrips, sse2FactorsStrips)(density0, s, block, k);
+        widestVariant(avx512FactorsStrips, avx2FactorsStrips, sse2FactorsStrips)(density0, s, block,
+                                                                                 k);
     }
 }
 

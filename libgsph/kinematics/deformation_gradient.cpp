@@ -253,25 +253,15 @@ GSPH_AVX512_TARGET void avx512CsrGradients(const Reference& ref, const CsrPairWe
 void csrThetaGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
                        const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
                        BlockThetaGradients& g) {
-    const int width = laneWidth();
-    if (width >= 8)
-        avx512CsrGradients(ref, staged, bonds, block, x, v, g);
-    else if (width >= 4)
-        avx2CsrGradients(ref, staged, bonds, block, x, v, g);
-    else
-        portableCsrGradients(ref, staged, bonds, block, x, v, g);
+    widestVariant(avx512CsrGradients, avx2CsrGradients, portableCsrGradients)(ref, staged, bonds,
+                                                                              block, x, v, g);
 }
 
 void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,
                            const Vec3Field& v, BlockThetaGradients& g) {
     const Index len = block.size();
-    const int width = laneWidth();
-    if (width >= 8 && len >= 8)
-        avx512BlockGradients(st, block.begin, len, block.stride, x, v, g);
-    else if (width >= 4)
-        avx2BlockGradients(st, block.begin, len, block.stride, x, v, g);
-    else
-        portableBlockGradients(st, block.begin, len, block.stride, x, v, g);
+    widestVariant(avx512BlockGradients, avx2BlockGradients, portableBlockGradients, len)(
+        st, block.begin, len, block.stride, x, v, g);
 }
 
 }  // namespace gsph
