@@ -157,10 +157,11 @@ template <int D, class L, int... P>
 }
 template <class L>
 [[gnu::always_inline]] inline void transposeLanes(L* r) {
-    constexpr auto lanes = std::make_integer_sequence<int, kLanesOf<L>>{};
+    constexpr int width = kLanesOf<L>;
+    constexpr auto lanes = std::make_integer_sequence<int, width>{};
     transposeRound<1>(r, lanes);
-    if constexpr (kLanesOf < L >> 2) transposeRound<2>(r, lanes);
-    if constexpr (kLanesOf < L >> 4) transposeRound<4>(r, lanes);
+    if constexpr (width > 2) transposeRound<2>(r, lanes);
+    if constexpr (width > 4) transposeRound<4>(r, lanes);
 }
 
 /// Columns first … first + W − 1 of the rows index[0] … index[W − 1] of a row-major table of

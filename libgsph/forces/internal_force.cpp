@@ -561,10 +561,11 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
     place(kSlotX, components(fields.x)), place(kSlotV, components(fields.v));
     place(kSlotF, components(fields.F)), place(kSlotK, components(factors.K));
     place(kSlotN, components(factors.N)), place(kSlotReferenceX, components(fields.X));
-    slot[kSlotSoundSpeed] = factors.soundSpeed.data(), slot[kSlotDensity] = factors.density.data();
+    slot[kSlotSoundSpeed] = factors.soundSpeed.data();
+    slot[kSlotDensity] = factors.density.data();
     slot[kSlotViscositySwitch] = factors.viscositySwitch.data();
     slot[kSlotHourglassScale] = factors.hourglassScale.data();
-    slot[kSlotSmoothingLength] = ref.smoothingLength.data(),
+    slot[kSlotSmoothingLength] = ref.smoothingLength.data();
     slot[kSlotVolume] = ref.quadVolume.data();
     const bool useRows = rows != nullptr && staged != nullptr && !staged->gathered.empty();
     if (useRows) {
