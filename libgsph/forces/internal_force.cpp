@@ -21,18 +21,18 @@ constexpr int kNoHourglass = 0, kElasticHourglass = 1, kSecantHourglass = 2;
 // Raw component pointers of every field the pair terms read: the stencil loops index them
 // directly so that the compiler sees plain contiguous streams.
 struct ForceView {
-    std::array<const double*, 9> K, N, F;
-    const Mat3* G;  // per particle (bonds may have changed it)
-    std::array<const double*, 3> x, v, X;
-    const double *h, *c, *rho, *alpha, *hourglassScale, *V;
-    const KernelEntry* table;
-    const CsrPairWeights* staged;  // null: stage every CSR particle's pairs each time
-    // The CSR pair groups read the neighbours' fields by slot (forces/pair_field_rows.hpp): the
-    // same component pointers as above, from the SoA fields, or from the rows.
+    // Every field the pair terms read, by slot (neighbors/pair_field_rows.hpp): the SoA column of
+    // each component. The stencil kernels and the centres read them at(slot); the CSR pair
+    // groups read the far ends from these columns or from the rows.
     std::array<const double*, kPairSlots> slot;
     const double* rows;  // null: the gathered runs gather from the SoA fields
+    const Mat3* G;       // per particle (bonds may have changed it)
+    const KernelEntry* table;
+    const CsrPairWeights* staged;  // null: stage every CSR particle's pairs each time
     ViscosityCoefficients viscosity;
     double alphaE;  // α E of the hourglass penalty [Pa]
+
+    [[gnu::always_inline]] const double* at(std::size_t s) const { return slot[s]; }
 };
 
 template <int R, int C>
@@ -60,7 +60,7 @@ template <class L, class Load>
 [[gnu::always_inline]] inline void stressStrip(const ForceView& in, const Stencil& st,
                                                const Load& load, Index a, Index i, BlockSums& s) {
     std::array<const double*, 9> K;
-    for (std::size_t j = 0; j < 9; ++j) K[j] = in.K[j] + a;
+    for (std::size_t j = 0; j < 9; ++j) K[j] = in.at(kSlotK + j) + a;
     L acc[3] = {};
     const Index m = st.size();
     for (Index k = st.symmetric ? m / 2 : 0; k < m; ++k) {
@@ -86,39 +86,44 @@ template <bool Viscous, int Hourglass, class L, class Load>
     L sumQW[3] = {}, fN[3] = {}, fh[3] = {};
     for (Index k = 0; k < st.size(); ++k) {
         const Index b = a + st.delta[static_cast<std::size_t>(k)];
+        // Component `slot` at the centres (a) and at the neighbours (b), and their pair mean.
+        const auto atA = [&](std::size_t slot) __attribute__((always_inline))->L {
+            return load(in.at(static_cast<std::size_t>(slot)) + a);
+        };
+        const auto atB = [&](std::size_t slot) __attribute__((always_inline))->L {
+            return load(in.at(static_cast<std::size_t>(slot)) + b);
+        };
+        const auto mean = [&](std::size_t slot) __attribute__((always_inline))->L {
+            return 0.5 * (atA(slot) + atB(slot));
+        };
         L y[3];
-        for (std::size_t r = 0; r < 3; ++r) y[r] = load(in.x[r] + a) - load(in.x[r] + b);
+        for (std::size_t r = 0; r < 3; ++r) y[r] = atA(kSlotX + r) - atB(kSlotX + r);
         const L x2 = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
         if constexpr (Viscous) {
             L vx{};
-            for (std::size_t r = 0; r < 3; ++r)
-                vx += (load(in.v[r] + a) - load(in.v[r] + b)) * y[r];
+            for (std::size_t r = 0; r < 3; ++r) vx += (atA(kSlotV + r) - atB(kSlotV + r)) * y[r];
             if (anyNegative(vx)) {  // else q = 0 in every lane: nothing to add (the same bits)
-                const L q = viscousPairPressure<L>(in.viscosity, vx, x2,
-                                                   0.5 * (load(in.h + a) + load(in.h + b)),
-                                                   0.5 * (load(in.c + a) + load(in.c + b)),
-                                                   0.5 * (load(in.rho + a) + load(in.rho + b)),
-                                                   0.5 * (load(in.alpha + a) + load(in.alpha + b)));
+                const L q = viscousPairPressure<L>(in.viscosity, vx, x2, mean(kSlotSmoothingLength),
+                                                   mean(kSlotSoundSpeed), mean(kSlotDensity),
+                                                   mean(kSlotViscositySwitch));
                 const Vec3& w = st.gradW[static_cast<std::size_t>(k)];
                 for (std::size_t r = 0; r < 3; ++r) {
                     sumQW[r] += q * w[static_cast<Eigen::Index>(r)];
-                    fN[r] += q * (load(in.N[3 * r] + b) * w[0] + load(in.N[3 * r + 1] + b) * w[1] +
-                                  load(in.N[3 * r + 2] + b) * w[2]);
+                    fN[r] += q * (atB(kSlotN + 3 * r) * w[0] + atB(kSlotN + 3 * r + 1) * w[1] +
+                                  atB(kSlotN + 3 * r + 2) * w[2]);
                 }
             }
         }
         if constexpr (Hourglass) {
             L Y[3];
-            for (std::size_t r = 0; r < 3; ++r) Y[r] = load(in.X[r] + a) - load(in.X[r] + b);
+            for (std::size_t r = 0; r < 3; ++r)
+                Y[r] = atA(kSlotReferenceX + r) - atB(kSlotReferenceX + r);
             L predicted{};
             for (std::size_t r = 0; r < 3; ++r)
                 for (std::size_t c = 0; c < 3; ++c)
-                    predicted +=
-                        y[r] * (load(in.F[3 * r + c] + a) + load(in.F[3 * r + c] + b)) * Y[c];
-            L pairWeight =
-                0.5 * (load(in.V + a) + load(in.V + b)) * st.W[static_cast<std::size_t>(k)];
-            if constexpr (Hourglass == kSecantHourglass)
-                pairWeight *= 0.5 * (load(in.hourglassScale + a) + load(in.hourglassScale + b));
+                    predicted += y[r] * (atA(kSlotF + 3 * r + c) + atB(kSlotF + 3 * r + c)) * Y[c];
+            L pairWeight = mean(kSlotVolume) * st.W[static_cast<std::size_t>(k)];
+            if constexpr (Hourglass == kSecantHourglass) pairWeight *= mean(kSlotHourglassScale);
             const L kappa =
                 hourglassPairCoefficient<L>(in.alphaE, 0.5 * predicted, x2,
                                             Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2], pairWeight);
@@ -239,12 +244,18 @@ struct PairCentre {
 template <int Hourglass, class L, class Load>
 [[gnu::always_inline]] inline void loadCentre(const ForceView& in, const Load& load,
                                               PairCentre<L>& o) {
-    for (std::size_t r = 0; r < 3; ++r)
-        o.x[r] = load(in.x[r]), o.v[r] = load(in.v[r]), o.X[r] = load(in.X[r]);
-    for (std::size_t rc = 0; rc < 9; ++rc) o.F[rc] = load(in.F[rc]);
-    o.c = load(in.c), o.rho = load(in.rho), o.alpha = load(in.alpha), o.h = load(in.h);
-    o.V = load(in.V);
-    if constexpr (Hourglass == kSecantHourglass) o.s = load(in.hourglassScale);
+    for (std::size_t r = 0; r < 3; ++r) {
+        o.x[r] = load(in.at(kSlotX + r));
+        o.v[r] = load(in.at(kSlotV + r));
+        o.X[r] = load(in.at(kSlotReferenceX + r));
+    }
+    for (std::size_t rc = 0; rc < 9; ++rc) o.F[rc] = load(in.at(kSlotF + rc));
+    o.c = load(in.at(kSlotSoundSpeed));
+    o.rho = load(in.at(kSlotDensity));
+    o.alpha = load(in.at(kSlotViscositySwitch));
+    o.h = load(in.at(kSlotSmoothingLength));
+    o.V = load(in.at(kSlotVolume));
+    if constexpr (Hourglass == kSecantHourglass) o.s = load(in.at(kSlotHourglassScale));
 }
 
 // Rows j … j + width − 1 of staged weights (component r of a vector weight at r · stride).
@@ -403,7 +414,7 @@ template <bool Viscous, int Hourglass, bool FromRows, class L>
             } else {
                 pairGroup<Viscous, Hourglass, L>(
                     in, weights, o, [&in, b ](int slot) __attribute__((always_inline)) {
-                        return gatherLanesAt<L>(in.slot[static_cast<std::size_t>(slot)], b);
+                        return gatherLanesAt<L>(in.at(static_cast<std::size_t>(slot)), b);
                     },
                     s[u]);
             }
@@ -445,7 +456,7 @@ template <bool Viscous, int Hourglass, class L>
                     {w.stripPairs.stride,
                      strip.base + static_cast<std::size_t>(e * kPairLanes + u * width)}},
                 o, [&in, ad ](int slot) __attribute__((always_inline)) {
-                    return loadLanes<L>(in.slot[static_cast<std::size_t>(slot)] + ad);
+                    return loadLanes<L>(in.at(static_cast<std::size_t>(slot)) + ad);
                 },
                 s);
         }
@@ -549,6 +560,15 @@ void forceLoop(const ForceView& in, const Reference& ref, const StressFactors& s
 
 }  // namespace
 
+void refreshMotionRows(PairFieldRows& rows, const ParticleFields& fields,
+                       const CsrPairWeights& staged, std::size_t n) {
+    if (staged.gathered.empty()) return;
+    const std::array<const double*, kMotionSlots> column{
+        fields.x.component(0), fields.x.component(1), fields.x.component(2),
+        fields.v.component(0), fields.v.component(1), fields.v.component(2)};
+    rows.refresh(kSlotX, column, staged.gathered, n);
+}
+
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds,
@@ -568,28 +588,16 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
     slot[kSlotSmoothingLength] = ref.smoothingLength.data();
     slot[kSlotVolume] = ref.quadVolume.data();
     const bool useRows = rows != nullptr && staged != nullptr && !staged->gathered.empty();
-    if (useRows) {
-        std::array<const double*, kRowFields> column;
-        std::copy_n(slot.begin(), kRowFields, column.begin());
-        rows->refresh(column, staged->gathered, static_cast<std::size_t>(ref.size()));
-    }
-    const ForceView in{components(factors.K),
-                       components(factors.N),
-                       components(fields.F),
+    if (useRows)  // x and v were refreshed after the drift (refreshMotionRows)
+        rows->refresh(
+            kMotionSlots,
+            std::span<const double* const>(slot.data() + kMotionSlots, slot.data() + kRowFields),
+            staged->gathered, static_cast<std::size_t>(ref.size()));
+    const ForceView in{slot,
+                       useRows ? rows->data() : nullptr,
                        G != nullptr ? G : ref.G.data(),
-                       components(fields.x),
-                       components(fields.v),
-                       components(fields.X),
-                       ref.smoothingLength.data(),
-                       factors.soundSpeed.data(),
-                       factors.density.data(),
-                       factors.viscositySwitch.data(),
-                       factors.hourglassScale.data(),
-                       ref.quadVolume.data(),
                        ref.pairs.table.data(),
                        staged,
-                       slot,
-                       useRows ? rows->data() : nullptr,
                        options.viscosity,
                        options.hourglass * options.youngsModulus};
     const bool viscous = options.viscosity.enabled();

@@ -10,7 +10,7 @@
 // terms stencil entry by stencil entry across the block on SoA fields, vectorised across
 // particles; the other particles take their CSR lists, staged as SoA weights
 // (neighbors/staged_pairs.hpp) and vectorised across each particle's pairs (their far ends'
-// fields read as rows, forces/pair_field_rows.hpp). Both evaluate the
+// fields read as rows, neighbors/pair_field_rows.hpp). Both evaluate the
 // same pair formulas (forces/artificial_viscosity.hpp, forces/hourglass.hpp) in fixed orders; the
 // block a particle belongs to is fixed at setup, so results stay independent of the thread count
 // and the strip width. Allocation-free once the per-thread staging buffers have grown.
@@ -28,7 +28,7 @@
 #include "forces/artificial_viscosity.hpp"
 #include "forces/force_stage.hpp"  // ForceParts
 #include "forces/hourglass.hpp"
-#include "forces/pair_field_rows.hpp"
+#include "neighbors/pair_field_rows.hpp"
 #include "neighbors/staged_pairs.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
@@ -84,12 +84,19 @@ struct ForceOptions {
 /// CSR path, and so do particles with interface weight corrections (ref.pairCorrections), which
 /// apply while a particle keeps all its bonds. G per particle from `G` (null: ref.G). `staged`:
 /// the body's CsrPairWeights (null: staged here each time; same result). `rows`: with `staged`,
-/// refreshed here for staged->gathered and read by the CSR blocks' gathered runs (null: they
-/// gather from the SoA fields; the same result).
+/// read by the CSR blocks' gathered runs (null: they gather from the SoA fields; the same
+/// result); its slots from kMotionSlots on are refreshed here for staged->gathered, its x and v
+/// must hold `fields` x and v there (refreshMotionRows, after the drift).
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds = {},
                    const Mat3* G = nullptr, const CsrPairWeights* staged = nullptr,
                    PairFieldRows* rows = nullptr);
+
+/// Copies x and v of the particles the CSR blocks' runs read (staged.gathered) from `fields`
+/// into their rows (n: the particle count): after the drift, before the θ-gradients
+/// (kinematics/deformation_gradient.hpp) and internalForce read them.
+void refreshMotionRows(PairFieldRows& rows, const ParticleFields& fields,
+                       const CsrPairWeights& staged, std::size_t n);
 
 }  // namespace gsph

@@ -7,8 +7,9 @@ InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double>
                                        const ParticleFields& fields, const StressFactors& factors,
                                        const std::vector<StencilBlocks>& blocks,
                                        const std::vector<CsrPairWeights>& staged,
-                                       ViscosityCoefficients viscosity, double hourglass,
-                                       HourglassModulus modulus, const BrittleBonds& bonds)
+                                       PairFieldRows& rows, ViscosityCoefficients viscosity,
+                                       double hourglass, HourglassModulus modulus,
+                                       const BrittleBonds& bonds)
     : ref_(ref),
       youngsModulus_(std::move(youngsModulus)),
       fields_(fields),
@@ -18,7 +19,8 @@ InternalForceStage::InternalForceStage(const Reference& ref, std::vector<double>
       viscosity_(viscosity),
       hourglass_(hourglass),
       modulus_(modulus),
-      bonds_(bonds) {}
+      bonds_(bonds),
+      rows_(rows) {}
 
 StageNeeds InternalForceStage::needs() const {
     StageNeeds needs;

@@ -5,7 +5,7 @@
 // fields the kinematics stage left (integrator/stress_update.hpp). It sets `force` (every
 // particle belongs to one body), so later stages add to it; viscosity and hourglass control
 // write their parts into the viscous and hourglass channels for the energy ledger. The CSR
-// blocks' gathered runs read their far ends' fields from rows (forces/pair_field_rows.hpp).
+// blocks' gathered runs read their far ends' fields from rows (neighbors/pair_field_rows.hpp).
 #pragma once
 
 #include <vector>
@@ -21,14 +21,16 @@ namespace gsph {
 class InternalForceStage final : public ForceStage {
   public:
     /// Reads `fields`, `factors`, `blocks` and `staged` (one per body) and the bonds at every
-    /// evaluation; they must outlive the stage. `youngsModulus`: E per body, as `blocks` (scales
-    /// the hourglass penalty) [Pa]; `modulus`: the penalty's in plastic flow
+    /// evaluation, and `rows`, whose x and v the caller refreshes before each
+    /// (refreshMotionRows); they must outlive the stage. `youngsModulus`: E per body, as
+    /// `blocks` (scales the hourglass penalty) [Pa]; `modulus`: the penalty's in plastic flow
     /// (forces/hourglass.hpp).
     InternalForceStage(const Reference& ref, std::vector<double> youngsModulus,
                        const ParticleFields& fields, const StressFactors& factors,
                        const std::vector<StencilBlocks>& blocks,
-                       const std::vector<CsrPairWeights>& staged, ViscosityCoefficients viscosity,
-                       double hourglass, HourglassModulus modulus, const BrittleBonds& bonds);
+                       const std::vector<CsrPairWeights>& staged, PairFieldRows& rows,
+                       ViscosityCoefficients viscosity, double hourglass, HourglassModulus modulus,
+                       const BrittleBonds& bonds);
 
     std::string name() const override { return "internal force"; }
     StageNeeds needs() const override;
@@ -45,7 +47,7 @@ class InternalForceStage final : public ForceStage {
     double hourglass_;
     HourglassModulus modulus_;
     const BrittleBonds& bonds_;
-    PairFieldRows rows_;  ///< the gathered runs' far ends, refreshed body by body
+    PairFieldRows& rows_;  ///< the gathered runs' far ends, refreshed body by body
 };
 
 }  // namespace gsph

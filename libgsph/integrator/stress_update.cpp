@@ -40,7 +40,8 @@ struct KinematicsStep {
     const BrittleBonds& bonds;
     const Mat3* G;  // per particle: the reference's, or recomputed over surviving bonds
     const ViscosityCoefficients& viscosity;
-    bool plasticHourglass;  // s_a of forces/hourglass.hpp from the plastic strain (else 1)
+    bool plasticHourglass;      // s_a of forces/hourglass.hpp from the plastic strain (else 1)
+    const PairFieldRows& rows;  // x and v of the CSR blocks' far ends (refreshMotionRows)
 };
 
 // Lower bound of the smallest stretch σ_min(F) = 1/‖F^{-1}‖₂ ≥ 1/√(‖F^{-1}‖₁‖F^{-1}‖∞):
@@ -532,7 +533,7 @@ void updateBlock(const Model& model, KinematicsStep& s, const StencilBlocks& blo
         advanceBlock(model, s, block, g);
     } else {
         BlockThetaGradients g;
-        csrThetaGradients(s.ref, &staged, bonds, block, s.fields.x, s.fields.v, g);
+        csrThetaGradients(s.ref, &staged, bonds, block, s.fields.x, s.fields.v, g, &s.rows);
         advanceBlock(model, s, block, g);
         for (Index i = 0; i < block.size(); ++i)
             if (s.bonds.detached(block.particle(i)))
@@ -586,7 +587,11 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
                      bonds_,
                      bonds_.G().data(),
                      viscosity_,
-                     hourglass_ == HourglassModulus::Secant};
+                     hourglass_ == HourglassModulus::Secant,
+                     rows_};
+    // The runs' far ends' x and v as rows, for the θ-gradients and then the force.
+    for (const CsrPairWeights& staged : staged_)
+        refreshMotionRows(rows_, fields_, staged, static_cast<std::size_t>(ref_.size()));
     // The nonlocal damage's averages of the drivers at t_n, before any particle updates its own.
     for (const NonlocalAverage& average : nonlocal_) {
         const Index begin = std::max(average.begin(), owned_.begin);

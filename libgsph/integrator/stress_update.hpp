@@ -66,6 +66,9 @@ class StressUpdate {
     const std::vector<StencilBlocks>& blocks() const { return blocks_; }
     /// Per body, as blocks(): its CSR particles' pairs staged once (neighbors/staged_pairs.hpp).
     const std::vector<CsrPairWeights>& staged() const { return staged_; }
+    /// The CSR blocks' far ends' fields as rows, x and v current after advance() (the internal
+    /// force refreshes the rest and reads them).
+    PairFieldRows& rows() { return rows_; }
     /// Current spacing ℓ_a of each particle [m].
     const std::vector<double>& lengthScale() const { return lengthScale_; }
     /// Whether some body's damage is nonlocal: advance() then reads the damage driver of every
@@ -87,6 +90,9 @@ class StressUpdate {
     ParticleFields fields_;
     std::vector<StencilBlocks> blocks_;
     std::vector<CsrPairWeights> staged_;
+    /// The CSR blocks' far ends' fields (neighbors/pair_field_rows.hpp): x and v refreshed here,
+    /// the rest by the internal force.
+    PairFieldRows rows_;
     std::vector<double> lengthScale_;
     std::vector<std::uint8_t> failure_;  ///< per particle: why the update failed (0: it did not)
     /// Per particle, this step's failure loss [J] (sized only when a body's model tracks a

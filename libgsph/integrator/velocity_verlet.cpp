@@ -83,8 +83,8 @@ VelocityVerlet::VelocityVerlet(const Reference& ref, std::vector<BodyRange> bodi
     }
     stages_.push_back(std::make_shared<InternalForceStage>(
         ref, std::move(youngsModulus), stress_.fields(), stress_.factors(), stress_.blocks(),
-        stress_.staged(), options_.viscosity, options_.hourglass, options_.hourglassModulus,
-        bonds_));
+        stress_.staged(), stress_.rows(), options_.viscosity, options_.hourglass,
+        options_.hourglassModulus, bonds_));
     if (softensBonds(options_))
         stages_.push_back(std::make_shared<CohesiveBondStage>(
             ref, bonds_, byParticle(ref, options_.bondStretch, 0.0),

@@ -114,10 +114,10 @@ struct CsrThetaSums {
 };
 
 // The sums of one group of staged entries j … j + width − 1 into the lane sums, the
-// neighbours' x and v through fetch (a gather, or a contiguous load at a + δ).
+// neighbours' x and v through fetch(slot) (PairFieldSlot: a gather, a contiguous load at a + δ,
+// or a column of the rows).
 template <class L, class Fetch>
 [[gnu::always_inline]] inline void thetaGroup(const double* wOwn, std::size_t stride, std::size_t j,
-                                              const Vec3Field& x, const Vec3Field& v,
                                               const Fetch& fetch, L (&ax)[9], L (&av)[9],
                                               L (&aw)[3]) {
     L w[3];
@@ -126,7 +126,7 @@ template <class L, class Fetch>
         aw[c] += w[c];
     }
     for (int r = 0; r < 3; ++r) {
-        const L xb = fetch(x.component(r)), vb = fetch(v.component(r));
+        const L xb = fetch(kSlotX + r), vb = fetch(kSlotV + r);
         for (std::size_t c = 0; c < 3; ++c) {
             ax[3 * r + c] += xb * w[c];
             av[3 * r + c] += vb * w[c];
@@ -134,24 +134,43 @@ template <class L, class Fetch>
     }
 }
 
+// The SoA column of x or v at a motion slot.
+inline const double* motionColumn(const Vec3Field& x, const Vec3Field& v, int slot) {
+    return slot < kSlotV ? x.component(slot - kSlotX) : v.component(slot - kSlotV);
+}
+
 // A run of a particle's staged pairs across kPairLanes lanes, reduced in the fixed order of
-// sumPairLanes and added into column i.
-template <class L>
+// sumPairLanes and added into column i. FromRows: x and v of the far ends as columns of `rows`
+// (every b is one of CsrPairWeights::gathered), else gathered from x and v; the same values.
+template <bool FromRows, class L>
 [[gnu::always_inline]] inline void gatheredThetaSums(const StagedPairs& st, std::size_t begin,
                                                      Index size, const Vec3Field& x,
-                                                     const Vec3Field& v, Index i,
-                                                     CsrThetaSums& out) {
+                                                     const Vec3Field& v, const double* rows,
+                                                     Index i, CsrThetaSums& out) {
     constexpr int width = kLanesOf<L>, strips = kPairLanes / width;
     L ax[strips][9] = {}, av[strips][9] = {}, aw[strips][3] = {};
     for (Index j0 = 0; j0 < size; j0 += kPairLanes)
         for (int u = 0; u < strips; ++u) {
             const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
             const std::int32_t* b = st.b.data() + j;
-            thetaGroup<L>(
-                st.wOwn.data(), st.stride, j, x, v,
-                [b](const double* p)
-                    __attribute__((always_inline)) { return gatherLanesAt<L>(p, b); },
-                ax[u], av[u], aw[u]);
+            if constexpr (FromRows) {
+                constexpr int loaded = (kMotionSlots + width - 1) / width * width;
+                L column[loaded];
+                for (int first = 0; first < loaded; first += width)
+                    loadColumns<L>(rows, kRowLength, b, static_cast<std::size_t>(first),
+                                   column + first);
+                thetaGroup<L>(
+                    st.wOwn.data(), st.stride,
+                    j, [&column](int slot) __attribute__((always_inline)) { return column[slot]; },
+                    ax[u], av[u], aw[u]);
+            } else {
+                thetaGroup<L>(
+                    st.wOwn.data(), st.stride, j,
+                    [&x, &v, b ](int slot) __attribute__((always_inline)) {
+                        return gatherLanesAt<L>(motionColumn(x, v, slot), b);
+                    },
+                    ax[u], av[u], aw[u]);
+            }
         }
     L lanes[strips];
     for (int rc = 0; rc < 9; ++rc) {
@@ -179,9 +198,10 @@ template <class L>
             const Index ad = strip.first + u * width + delta[e];
             thetaGroup<L>(
                 w.stripPairs.wOwn.data(), w.stripPairs.stride,
-                strip.base + static_cast<std::size_t>(e * kPairLanes + u * width), x, v,
-                [ad](const double* p)
-                    __attribute__((always_inline)) { return loadLanes<L>(p + ad); },
+                strip.base + static_cast<std::size_t>(e * kPairLanes + u * width),
+                [&x, &v, ad ](int slot) __attribute__((always_inline)) {
+                    return loadLanes<L>(motionColumn(x, v, slot) + ad);
+                },
                 ax, av, aw);
         }
         const Index col = i + u * width;
@@ -196,7 +216,8 @@ template <class L>
                                                      const CsrPairWeights* staged,
                                                      const BondView& bonds,
                                                      const ParticleBlock& block, const Vec3Field& x,
-                                                     const Vec3Field& v, BlockThetaGradients& g) {
+                                                     const Vec3Field& v, const double* rows,
+                                                     BlockThetaGradients& g) {
     CsrThetaSums s{};
     const Index len = block.size();
     bool afresh[kMaxBlock];
@@ -205,15 +226,21 @@ template <class L>
     });
     for (Index i = 0; i < len; ++i) {
         const Index c = block.particle(i);
+        const auto run = [&](const StagedPairs& st, std::size_t begin, Index size)
+            __attribute__((always_inline)) {
+            if (rows != nullptr)
+                gatheredThetaSums<true, L>(st, begin, size, x, v, rows, i, s);
+            else
+                gatheredThetaSums<false, L>(st, begin, size, x, v, rows, i, s);
+        };
         if (afresh[i]) {
             Index size = 0;
             const StagedPairs& st = stageIntoScratch(ref, bonds, c, size);
-            gatheredThetaSums<L>(st, 0, size, x, v, i, s);
+            run(st, 0, size);
         } else {
             const auto ic = static_cast<std::size_t>(c);
-            gatheredThetaSums<L>(staged->pairs, staged->begin[ic],
-                                 static_cast<Index>(staged->begin[ic + 1] - staged->begin[ic]), x,
-                                 v, i, s);
+            run(staged->pairs, staged->begin[ic],
+                static_cast<Index>(staged->begin[ic + 1] - staged->begin[ic]));
         }
     }
     leaveLanes<L>();
@@ -230,31 +257,35 @@ template <class L>
 
 void portableCsrGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
                           const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
-                          BlockThetaGradients& g) {
-    csrBlockGradients<Lanes2>(ref, staged, bonds, block, x, v, g);
+                          const double* rows, BlockThetaGradients& g) {
+    csrBlockGradients<Lanes2>(ref, staged, bonds, block, x, v, rows, g);
 }
 
 GSPH_AVX2_TARGET void avx2CsrGradients(const Reference& ref, const CsrPairWeights* staged,
                                        const BondView& bonds, const ParticleBlock& block,
-                                       const Vec3Field& x, const Vec3Field& v,
+                                       const Vec3Field& x, const Vec3Field& v, const double* rows,
                                        BlockThetaGradients& g) {
-    csrBlockGradients<Lanes4>(ref, staged, bonds, block, x, v, g);
+    csrBlockGradients<Lanes4>(ref, staged, bonds, block, x, v, rows, g);
 }
 
 GSPH_AVX512_TARGET void avx512CsrGradients(const Reference& ref, const CsrPairWeights* staged,
                                            const BondView& bonds, const ParticleBlock& block,
                                            const Vec3Field& x, const Vec3Field& v,
-                                           BlockThetaGradients& g) {
-    csrBlockGradients<Lanes8>(ref, staged, bonds, block, x, v, g);
+                                           const double* rows, BlockThetaGradients& g) {
+    csrBlockGradients<Lanes8>(ref, staged, bonds, block, x, v, rows, g);
 }
 
 }  // namespace
 
 void csrThetaGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
                        const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
-                       BlockThetaGradients& g) {
-    widestVariant(avx512CsrGradients, avx2CsrGradients, portableCsrGradients)(ref, staged, bonds,
-                                                                              block, x, v, g);
+                       BlockThetaGradients& g, const PairFieldRows* rows) {
+    // The rows hold the far ends of the CSR blocks' runs (not of a stencil block's).
+    const double* fromRows = rows != nullptr && staged != nullptr && block.stencil == kNoStencil
+                                 ? rows->data()
+                                 : nullptr;
+    widestVariant(avx512CsrGradients, avx2CsrGradients, portableCsrGradients)(
+        ref, staged, bonds, block, x, v, fromRows, g);
 }
 
 void stencilThetaGradients(const Stencil& st, const ParticleBlock& block, const Vec3Field& x,

@@ -21,6 +21,7 @@
 
 #include "core/soa_field.hpp"
 #include "core/strip_mat3.hpp"
+#include "neighbors/pair_field_rows.hpp"
 #include "neighbors/staged_pairs.hpp"
 #include "neighbors/stencil_blocks.hpp"
 #include "particles/reference.hpp"
@@ -85,9 +86,12 @@ struct BlockThetaGradients {
 /// of masked strips: `staged` (the body's, all bonds intact) while no particle is damaged, else
 /// staged here over the bonds that hold, each particle with its interface corrections while it
 /// keeps all its bonds. The same bits at every strip width; equal to thetaGradients to round-off.
+/// `rows`: the gathered runs read the neighbours' x and v from them (neighbors/pair_field_rows.hpp,
+/// refreshed for staged->gathered; only for a block of CSR particles, with `staged`), else they
+/// gather x and v; the same bits.
 void csrThetaGradients(const Reference& ref, const CsrPairWeights* staged, const BondView& bonds,
                        const ParticleBlock& block, const Vec3Field& x, const Vec3Field& v,
-                       BlockThetaGradients& g);
+                       BlockThetaGradients& g, const PairFieldRows* rows = nullptr);
 
 /// thetaGradients for the particles of a stencil block (kMinStencilRun ≤ size ≤ kMaxBlock;
 /// row i of g is block.particle(i)): b = a + st.delta[k], w_ab = st.gradW[k].

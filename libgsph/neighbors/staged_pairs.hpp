@@ -102,7 +102,8 @@ struct CsrPairWeights {
     /// The particles whose fields the runs of these blocks' CSR particles may read, ascending:
     /// each CSR particle (its padding's b), the neighbours of its own list and the owners of its
     /// pairs from other lists (all of them: a particle whose bonds changed stages every pair
-    /// that holds into its run). Where the force keeps them as rows (forces/pair_field_rows.hpp).
+    /// that holds into its run). Where the runs read them from rows
+    /// (neighbors/pair_field_rows.hpp).
     std::vector<Index> gathered;
     std::size_t bytes() const;
 };

@@ -2,7 +2,7 @@
 // The CSR path of the internal force and of F's θ-gradients runs in SIMD lanes from staged pairs
 // (neighbors/staged_pairs.hpp): staged once (masked strips and gathered runs) or staged at each
 // call (gathered runs), the runs' far ends gathered from the SoA fields or read as rows
-// (forces/pair_field_rows.hpp). On two overset blocks (cross pairs, interface corrections,
+// (neighbors/pair_field_rows.hpp). On two overset blocks (cross pairs, interface corrections,
 // mirrors) with every particle on the CSR path and random fields, each gives the same bits at
 // every strip width (rows or not), and each equals the pair formulas of DESIGN §4 summed one pair
 // at a time (written out here) to round-off.
@@ -68,6 +68,7 @@ struct Fixture {
         std::vector<Vec3> f(n);
         parts.viscous.assign(n, Vec3::Zero());
         parts.hourglass.assign(n, Vec3::Zero());
+        if (rows != nullptr) refreshMotionRows(*rows, fields, *staged, n);
         internalForce(t.ref, fields, factors, blocks, options, f, parts, bonds, G, staged, rows);
         return f;
     }
@@ -239,12 +240,19 @@ TEST(CsrPairLanes, OnlyParticlesNearABrokenBondStageTheirPairsAfresh) {
     }
     limitLanes(8);
     const double worst = worstAgainst(afresh, portable);
-    // F's θ-gradients over the surviving bonds likewise.
+    // F's θ-gradients over the surviving bonds likewise (from rows: the same bits).
     double worstGradient = 0.0;
+    PairFieldRows rows;
+    refreshMotionRows(rows, fx.fields, staged, static_cast<std::size_t>(ref.size()));
     for (const ParticleBlock& block : fx.blocks.blocks) {
         BlockThetaGradients once, each;
         csrThetaGradients(ref, &staged, view, block, fx.fields.x, fx.fields.v, once);
         csrThetaGradients(ref, nullptr, view, block, fx.fields.x, fx.fields.v, each);
+        BlockThetaGradients fromRows;
+        csrThetaGradients(ref, &staged, view, block, fx.fields.x, fx.fields.v, fromRows, &rows);
+        for (Index i = 0; i < block.size(); ++i)
+            EXPECT_TRUE(fromRows.gradX(i) == once.gradX(i) && fromRows.gradV(i) == once.gradV(i))
+                << "θ-gradients from rows, particle " << block.particle(i);
         for (Index i = 0; i < block.size(); ++i)
             worstGradient = std::max(
                 {worstGradient, (once.gradX(i) - each.gradX(i)).norm() / each.gradX(i).norm(),
@@ -264,12 +272,13 @@ TEST(CsrPairLanes, ThetaGradientsAreTheListSumsWithTheSameBitsAtEveryWidth) {
     const CsrPairWeights staged = stageCsrPairs(ref, fx.blocks);
     std::vector<Vec3> x(static_cast<std::size_t>(ref.size())), v(x.size());
     for (std::size_t a = 0; a < x.size(); ++a) x[a] = fx.fields.x[a], v[a] = fx.fields.v[a];
-    const auto gradients = [&](int width, const CsrPairWeights* w) {
+    const auto gradients = [&](int width, const CsrPairWeights* w,
+                               const PairFieldRows* rows = nullptr) {
         limitLanes(width);
         std::vector<Mat3> g(2 * x.size());
         for (const ParticleBlock& block : fx.blocks.blocks) {
             BlockThetaGradients bg;
-            csrThetaGradients(ref, w, {}, block, fx.fields.x, fx.fields.v, bg);
+            csrThetaGradients(ref, w, {}, block, fx.fields.x, fx.fields.v, bg, rows);
             for (Index i = 0; i < block.size(); ++i) {
                 const auto ia = static_cast<std::size_t>(block.particle(i));
                 g[2 * ia] = bg.gradX(i), g[2 * ia + 1] = bg.gradV(i);
@@ -284,6 +293,18 @@ TEST(CsrPairLanes, ThetaGradientsAreTheListSumsWithTheSameBitsAtEveryWidth) {
             const std::vector<Mat3> wide = gradients(width, w);
             EXPECT_EQ(std::memcmp(wide.data(), portable.data(), wide.size() * sizeof(Mat3)), 0)
                 << width << " lanes";
+        }
+        if (w != nullptr) {  // the far ends' x and v read as rows: the same bits at every width
+            PairFieldRows rows;
+            refreshMotionRows(rows, fx.fields, *w, x.size());
+            for (int width : {2, 4, 8}) {
+                if (laneWidth() < width) continue;
+                const std::vector<Mat3> fromRows = gradients(width, w, &rows);
+                EXPECT_EQ(
+                    std::memcmp(fromRows.data(), portable.data(), fromRows.size() * sizeof(Mat3)),
+                    0)
+                    << width << " lanes, rows";
+            }
         }
         double worst = 0.0;
         for (Index a = 0; a < ref.size(); ++a) {
