@@ -19,9 +19,12 @@ using Keys = std::vector<std::string>;
 // a source for every constant) and have no effect on the run.
 const Keys kCommonKeys = {"model",        "density",         "youngs_modulus", "poisson_ratio",
                           "bond_stretch", "fracture_energy", "notes",          "sources"};
+// The keys that regularize a Johnson–Cook damage (docs/materials.md): a choice of the model
+// tied to the layout's cells, so a case may set them beside a material file's constants.
+const Keys kRegularizationKeys = {"damage_length", "damage_size"};
 // Keys of a plastic solid besides its strength model's: the parts it composes
 // (libgsph/materials/plastic_solid.hpp).
-const Keys kPlasticPartKeys = {"eos", "damage", "damage_length", "damage_size"};
+const Keys kPlasticPartKeys = {"eos", "damage", kRegularizationKeys[0], kRegularizationKeys[1]};
 
 JohnsonCookParams readJohnsonCook(const TomlKeys& keys, const std::string& where);
 LinearHardeningParams readLinearHardening(const TomlKeys& keys, const std::string& where);
@@ -202,9 +205,21 @@ LinearHardeningParams readLinearHardening(const TomlKeys& keys, const std::strin
     return p;
 }
 
-// The constants of one material, from an inline [[material]] table or a material file.
+// Where a damage's regularization is read: the material's own keys, or a case's [[material]]
+// keys that replace the file's (both keys, when the case names either).
+struct RegularizationKeys {
+    const TomlKeys* keys = nullptr;
+    std::string where;
+};
+
+// The constants of one material, from an inline [[material]] table or a material file;
+// `caseRegularization`: the [[material]] table that named the file, if it sets a regularization.
 void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& extraKeys,
-                   const std::string& where, MaterialSpec& m) {
+                   const std::string& where, MaterialSpec& m,
+                   const RegularizationKeys& caseRegularization = {}) {
+    const RegularizationKeys regularization =
+        caseRegularization.keys != nullptr ? caseRegularization : RegularizationKeys{&keys, where};
+    const TomlKeys& reg = *regularization.keys;
     m.model = keys.text("model", "elastic");
     const ModelReader* model = nullptr;
     for (const ModelReader& candidate : kModels)
@@ -244,22 +259,43 @@ void readConstants(const TomlKeys& keys, const toml::table& table, const Keys& e
         if (keys.has("damage")) {
             const std::vector<double> d = keys.numbers("damage", 5);
             parts.damage = JohnsonCookDamage{{d[0], d[1], d[2], d[3], d[4]}};
-            parts.damage->length = keys.number("damage_length", 0.0, Sign::NonNegative);
-            parts.damage->referenceSize = keys.number("damage_size", 0.0, Sign::NonNegative);
+            parts.damage->length = reg.number("damage_length", 0.0, Sign::NonNegative);
+            parts.damage->referenceSize = reg.number("damage_size", 0.0, Sign::NonNegative);
             if (parts.damage->nonlocal() && parts.damage->referenceSize > 0.0)
-                keys.fail("damage_size", "'damage_size' in " + where +
-                                             " and 'damage_length' exclude each other (two "
-                                             "regularizations of one damage)");
+                reg.fail("damage_size", "'damage_size' in " + regularization.where +
+                                            " and 'damage_length' exclude each other (two "
+                                            "regularizations of one damage)");
         } else {
-            for (const char* key : {"damage_length", "damage_size"})
-                if (keys.has(key))
-                    keys.fail(key, "'" + std::string(key) + "' in " + where +
-                                       " needs 'damage' (the Johnson–Cook constants it "
-                                       "regularizes)");
+            for (const std::string& key : kRegularizationKeys)
+                if (reg.has(key))
+                    reg.fail(key, "'" + key + "' in " + regularization.where +
+                                      " needs 'damage' (the Johnson–Cook constants it "
+                                      "regularizes)" +
+                                      (&reg != &keys ? " in its file" : ""));
         }
         parts.eos = [&keys, eos, &m] { return eos->build(keys, m.elastic); };
     }
+    if (!model->plastic && &reg != &keys)
+        for (const std::string& key : kRegularizationKeys)
+            if (reg.has(key))
+                reg.fail(key, "'" + key + "' in " + regularization.where +
+                                  " needs a Johnson–Cook damage; its file's model is '" + m.model +
+                                  "'");
     m.material = model->build(parts);
+}
+
+MaterialSpec readMaterialFile(const std::filesystem::path& path,
+                              const RegularizationKeys& caseRegularization) {
+    const std::string file = path.string();
+    if (!std::filesystem::is_regular_file(path)) throw InputError(file + ": no such material file");
+    const toml::table root = parseTomlFile(file);
+    MaterialSpec m;
+    m.name = path.stem().string();
+    m.file = path;
+    m.line = 1;
+    const std::string where = "material '" + m.name + "'";
+    readConstants(TomlKeys(file, root, where), root, {}, where, m, caseRegularization);
+    return m;
 }
 
 }  // namespace
@@ -299,16 +335,7 @@ std::filesystem::path resolveMaterialFile(const std::filesystem::path& caseFolde
 }
 
 MaterialSpec readMaterialFile(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    if (!std::filesystem::is_regular_file(path)) throw InputError(file + ": no such material file");
-    const toml::table root = parseTomlFile(file);
-    MaterialSpec m;
-    m.name = path.stem().string();
-    m.file = path;
-    m.line = 1;
-    const std::string where = "material '" + m.name + "'";
-    readConstants(TomlKeys(file, root, where), root, {}, where, m);
-    return m;
+    return readMaterialFile(path, RegularizationKeys{});
 }
 
 MaterialSpec readMaterialTable(const std::filesystem::path& caseFile, const toml::table& table) {
@@ -321,8 +348,9 @@ MaterialSpec readMaterialTable(const std::filesystem::path& caseFile, const toml
         readConstants(keys, table, {"name"}, "[[material]]", m);
         return m;
     }
-    keys.rejectUnknown({"name", "file"}, [](const std::string&) {
-        return "(a [[material]] with 'file' takes every constant from that file)";
+    keys.rejectUnknown(Keys{"name", "file"} + kRegularizationKeys, [](const std::string&) {
+        return "(a [[material]] with 'file' takes every constant from that file; beside it only "
+               "the damage's regularization, damage_length or damage_size)";
     });
     const std::string file = keys.text("file", "");
     std::vector<std::filesystem::path> tried;
@@ -332,7 +360,11 @@ MaterialSpec readMaterialTable(const std::filesystem::path& caseFile, const toml
         for (const auto& t : tried) looked += (looked.empty() ? "" : ", ") + t.string();
         keys.fail("file", "material file '" + file + "' not found (looked for " + looked + ")");
     }
-    MaterialSpec fromFile = readMaterialFile(path);
+    bool regularized = false;
+    for (const std::string& key : kRegularizationKeys) regularized = regularized || keys.has(key);
+    MaterialSpec fromFile = readMaterialFile(
+        path, regularized ? RegularizationKeys{&keys, "[[material]] '" + m.name + "'"}
+                          : RegularizationKeys{});
     fromFile.name = m.name;
     fromFile.line = m.line;
     return fromFile;

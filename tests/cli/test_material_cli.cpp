@@ -102,6 +102,56 @@ TEST(MaterialLibrary, CaseFilesFindMaterialFilesNextToThemThenInTheLibrary) {
               fs::canonical(dir / "materials/ofhc_copper.toml"));
 }
 
+// A case sets the damage's regularization beside a material file (a choice tied to its layout,
+// not a constant of the material): it replaces the file's, both keys at once; nothing else may
+// stand beside `file`, and a regularization without a Johnson–Cook damage names the case's line.
+TEST(MaterialLibrary, CaseFilesSetTheDamageRegularizationBesideAMaterialFile) {
+    TempDir dir;
+    const auto caseWith = [&](const std::string& file, const std::string& extra) {
+        write(dir / "case.toml",
+              "[run]\nparticles = \"p.h5\"\nend_time = 1e-6\n\n[[material]]\n"
+              "name = \"steel\"\nfile = \"" +
+                  file + "\"\n" + extra + "\n[[body]]\ngroup = \"0\"\nmaterial = \"steel\"\n");
+        return solver::readCaseFile(dir / "case.toml");
+    };
+    const auto damageOf = [](const solver::CaseConfig& c) {
+        return damageModel(*c.materials[0].material);
+    };
+    const solver::CaseConfig plain = caseWith("materials/weldox_460e.toml", "");
+    ASSERT_NE(damageOf(plain), nullptr);
+    EXPECT_EQ(damageOf(plain)->length, 0.0);
+    const solver::CaseConfig nonlocal =
+        caseWith("materials/weldox_460e.toml", "damage_length = 2e-3\n");
+    EXPECT_EQ(damageOf(nonlocal)->length, 2e-3);
+    EXPECT_EQ(damageOf(nonlocal)->D, damageOf(plain)->D) << "the file's constants otherwise";
+    // The case's replaces the file's: a file with ℓ, a case with the size scaling.
+    std::string weldox(
+        (std::istreambuf_iterator<char>(std::ifstream(kLibrary / "weldox_460e.toml").rdbuf())), {});
+    weldox.insert(weldox.find("yield_stress"), "damage_length = 1.5e-3\n");
+    write(dir / "weldox_nonlocal.toml", weldox);
+    const solver::CaseConfig sized = caseWith("weldox_nonlocal.toml", "damage_size = 1e-3\n");
+    EXPECT_EQ(damageOf(sized)->length, 0.0);
+    EXPECT_EQ(damageOf(sized)->referenceSize, 1e-3);
+    EXPECT_EQ(damageOf(caseWith("weldox_nonlocal.toml", ""))->length, 1.5e-3);
+    const auto expectError = [&](const std::string& file, const std::string& extra,
+                                 const std::string& what) {
+        try {
+            caseWith(file, extra);
+            ADD_FAILURE() << "accepted: " << extra;
+        } catch (const InputError& e) {
+            const std::string msg = e.what();
+            EXPECT_NE(msg.find((dir / "case.toml").string() + ":8:"), std::string::npos) << msg;
+            EXPECT_NE(msg.find(what), std::string::npos) << msg;
+        }
+    };
+    expectError("materials/weldox_460e.toml", "damage_length = -1e-3\n", "must be");
+    expectError("materials/weldox_460e.toml", "yield_stress = 1e9\n", "unknown key 'yield_stress'");
+    expectError("materials/ofhc_copper.toml", "damage_length = 1e-3\n",
+                "'damage_length' in [[material]] 'steel' needs 'damage'");
+    expectError("materials/pmma.toml", "damage_size = 1e-3\n",
+                "needs a Johnson–Cook damage; its file's model is 'elastic'");
+}
+
 TEST(MaterialLibrary, BadMaterialFilesNameTheirLine) {
     TempDir dir;
     std::ifstream in(kLibrary / "ofhc_copper.toml");
