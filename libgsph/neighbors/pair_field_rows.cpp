@@ -16,10 +16,14 @@ void PairFieldRows::refresh(int first, std::span<const double* const> column,
         static_cast<std::size_t>(first) + column.size() > static_cast<std::size_t>(kRowFields))
         throw Error("PairFieldRows::refresh: slots beyond a row");
     constexpr std::size_t line = 64 / sizeof(double);
-    if (storage_.size() < n * kRowLength + line) {
-        storage_.assign(n * kRowLength + line, 0.0);
-        const auto address = reinterpret_cast<std::uintptr_t>(storage_.data());
-        rows_ = storage_.data() + (line - address / sizeof(double) % line) % line;
+    if (capacity_ < n * kRowLength + line) {
+        // Left uninitialized: only the listed particles' rows are ever written or read, so the
+        // pages of the others (most of them where few particles take the CSR path) stay
+        // unmapped instead of costing kRowLength doubles for every particle.
+        capacity_ = n * kRowLength + line;
+        storage_.reset(new double[capacity_]);
+        const auto address = reinterpret_cast<std::uintptr_t>(storage_.get());
+        rows_ = storage_.get() + (line - address / sizeof(double) % line) % line;
     }
     parallelFor(static_cast<std::ptrdiff_t>(particles.size()), [&](std::ptrdiff_t i) {
         const auto a = static_cast<std::size_t>(particles[static_cast<std::size_t>(i)]);

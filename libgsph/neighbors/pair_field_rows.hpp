@@ -12,12 +12,14 @@
 // block's run may read) hold their fields at the slots below once refreshed: x and v
 // (kSlotX … kSlotV + 2) after the drift, for the θ-gradients and then the force, the other slots
 // before the force; a reader reads only those rows, only after both refreshes of the same step.
-// The other particles' rows hold whatever they held. A row is kRowLength doubles, 64-byte
-// aligned, so that a strip of up to 8 components is one cache line (x and v: the first).
-// Allocation-free once sized.
+// The other particles' rows are never written (their pages stay unmapped: a lattice whose CSR
+// particles are few pays for their rows only). A row is kRowLength doubles, 64-byte aligned, so
+// that a strip of up to 8 components is one cache line (x and v: the first). Allocation-free
+// once sized.
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -62,8 +64,9 @@ class PairFieldRows {
     const double* data() const { return rows_; }
 
   private:
-    std::vector<double> storage_;
-    double* rows_ = nullptr;  ///< storage_ from its first 64-byte boundary
+    std::unique_ptr<double[]> storage_;
+    std::size_t capacity_ = 0;  ///< doubles in storage_
+    double* rows_ = nullptr;    ///< storage_ from its first 64-byte boundary
 };
 
 }  // namespace gsph

@@ -40,12 +40,12 @@
 
 namespace {
 
-// Peak resident set (VmHWM) of this process [bytes].
-long peakResidentBytes() {
+// Resident set of this process [bytes]: its peak (VmHWM) or now (VmRSS).
+long residentBytes(const std::string& which) {
     std::ifstream status("/proc/self/status");
     std::string key;
     while (status >> key) {
-        if (key == "VmHWM:") {
+        if (key == which) {
             long kb = 0;
             status >> kb;
             return kb * 1024;
@@ -53,6 +53,10 @@ long peakResidentBytes() {
         status.ignore(1 << 16, '\n');
     }
     return 0;
+}
+
+long peakResidentBytes() {
+    return residentBytes("VmHWM:");
 }
 
 // The --ogrid layout (see above), read as gsph-solve reads a particle file.
@@ -237,6 +241,8 @@ int main(int argc, char** argv) {
                     measured[0].threads);
     std::printf("peak bytes/particle  %.0f  (process peak RSS growth / particles)\n",
                 (peakResidentBytes() - baseline) / n);
+    std::printf("resident bytes/particle %.0f  (after the steps: RSS growth / particles)\n",
+                (residentBytes("VmRSS:") - baseline) / n);
     std::printf("pair-list bytes/particle %.0f\n", sim.reference().pairs.bytes() / n);
     double staged = 0.0;
     for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged())
