@@ -248,6 +248,28 @@ int main(int argc, char** argv) {
     for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged())
         staged += static_cast<double>(body.bytes());
     std::printf("staged CSR pairs bytes/particle %.0f (neighbors/staged_pairs.hpp)\n", staged / n);
+    // How full the SIMD lanes of the CSR path are: masked strips' entry-lanes holding a pair,
+    // runs' entries that are not padding.
+    double stripLanes = 0.0, stripPairs = 0.0, runEntries = 0.0, runPairs = 0.0;
+    for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged()) {
+        for (const MaskedStrip& strip : body.strips) {
+            const auto entries = static_cast<std::size_t>(strip.deltaEnd - strip.deltaBegin);
+            for (std::size_t j = 0; j < entries * kPairLanes; ++j)
+                stripPairs += body.stripPairs.valid[strip.base + j] != 0.0 ? 1.0 : 0.0;
+            stripLanes += static_cast<double>(entries * kPairLanes);
+        }
+        for (std::size_t a = 0; a + 1 < body.begin.size(); ++a)
+            for (std::size_t j = body.begin[a]; j < body.begin[a + 1]; ++j) {
+                runEntries += 1.0;
+                runPairs += body.pairs.share[j] != 0.0 ? 1.0 : 0.0;
+            }
+    }
+    if (stripLanes + runEntries > 0.0)
+        std::printf(
+            "CSR lanes            masked strips %.0f pairs in %.0f lanes (%.0f %%), runs %.0f "
+            "in %.0f (%.0f %%)\n",
+            stripPairs, stripLanes, 100.0 * stripPairs / std::max(stripLanes, 1.0), runPairs,
+            runEntries, 100.0 * runPairs / std::max(runEntries, 1.0));
     for (const Measured& m : measured)
         std::printf(
             "phases, %d thread%s kinematics+stress %.1f %%, forces %.1f %%, contact %.1f %%, "
