@@ -101,6 +101,7 @@ void correctInterfaceWeights(Reference& ref) {
     ref.correctionBegin.clear();
     ref.pairCorrection.clear();
     ref.mirrorCorrection.clear();
+    ref.interfaceSolve = {};
     if (ref.oversetBand.empty()) return;
     const PairList& P = ref.pairs;
     const auto n = static_cast<std::size_t>(ref.size());
@@ -199,6 +200,7 @@ void correctInterfaceWeights(Reference& ref) {
             "overset interface weights: the band's consistency constraints "
             "cannot be met (relative residual " +
             std::to_string(achievedResidual) + " after " + std::to_string(it) + " iterations)");
+    ref.interfaceSolve = {rows, it, achievedResidual};
     // Store in θ units along each list: δw_ab = G(a)^{-1} δγ_ab, and the mirrors.
     ref.correctionBegin.assign(n, -1);
     std::vector<std::uint8_t> touched(n, 0);

@@ -144,6 +144,14 @@ struct Reference {
     /// without an overset band.
     std::vector<Index> correctionBegin;
     std::vector<Vec3> pairCorrection, mirrorCorrection;
+    /// How the interface weights' solve went: the band's constraint rows, the conjugate-gradient
+    /// iterations and the relative residual reached (all 0 without a band). Most of a large
+    /// O-grid's set-up, so a run's log reports it.
+    struct InterfaceSolve {
+        Index rows = 0;
+        int iterations = 0;
+        double residual = 0.0;
+    } interfaceSolve;
     /// Particle a's corrections along its list, or null when it has none.
     const Vec3* pairCorrections(Index a) const {
         if (correctionBegin.empty() || correctionBegin[static_cast<std::size_t>(a)] < 0)

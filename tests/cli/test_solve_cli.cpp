@@ -189,8 +189,14 @@ TEST(SolveCli, SampleCaseRunsAndBalancesItsEnergy) {
         EXPECT_NE(e.path().filename().string()[0], '.')
             << "a temporary file was left: " << e.path();
     // Where the wall time went: the step's four phases and the rest, shares that add up to the
-    // whole (each printed to 0.1 %).
+    // whole (each printed to 0.1 %); before them the set-up's time (one space: no band solve).
     const std::string log = test::slurp(run / "run.log");
+    double setup = -1.0;
+    const std::size_t setupLine = log.find("\nset-up ");
+    ASSERT_NE(setupLine, std::string::npos) << log;
+    ASSERT_EQ(std::sscanf(log.c_str() + setupLine, "\nset-up %lf s wall", &setup), 1);
+    EXPECT_GT(setup, 0.0);
+    EXPECT_EQ(log.find("interface weights", setupLine), std::string::npos) << log;
     const std::size_t timeLine = log.find("\ntime: kinematics+stress ");
     ASSERT_NE(timeLine, std::string::npos) << log;
     double shares[5] = {};
