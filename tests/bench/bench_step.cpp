@@ -55,10 +55,6 @@ long residentBytes(const std::string& which) {
     return 0;
 }
 
-long peakResidentBytes() {
-    return residentBytes("VmHWM:");
-}
-
 // The --ogrid layout (see above), read as gsph-solve reads a particle file.
 gsph::Reference ogridReference(int cells, double kappa, std::string& layout) {
     using namespace gsph;
@@ -120,7 +116,7 @@ int main(int argc, char** argv) {
 
     using namespace gsph;
     limitLanes(lanes);
-    const long baseline = peakResidentBytes();
+    const long baseline = residentBytes("VmHWM:");
     const auto tSetup = std::chrono::steady_clock::now();
     SolverOptions options;
     if (!noViscosity) options.viscosity = {1.0, 1.0};
@@ -240,18 +236,15 @@ int main(int argc, char** argv) {
                     measured[0].seconds / measured[i].seconds, measured[i].threads,
                     measured[0].threads);
     std::printf("peak bytes/particle  %.0f  (process peak RSS growth / particles)\n",
-                (peakResidentBytes() - baseline) / n);
+                (residentBytes("VmHWM:") - baseline) / n);
     std::printf("resident bytes/particle %.0f  (after the steps: RSS growth / particles)\n",
                 (residentBytes("VmRSS:") - baseline) / n);
     std::printf("pair-list bytes/particle %.0f\n", sim.reference().pairs.bytes() / n);
-    double staged = 0.0;
-    for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged())
-        staged += static_cast<double>(body.bytes());
-    std::printf("staged CSR pairs bytes/particle %.0f (neighbors/staged_pairs.hpp)\n", staged / n);
-    // How full the SIMD lanes of the CSR path are: masked strips' entry-lanes holding a pair,
-    // runs' entries that are not padding.
-    double stripLanes = 0.0, stripPairs = 0.0, runEntries = 0.0, runPairs = 0.0;
+    // The staged CSR pairs' size, and how full the CSR path's SIMD lanes are: masked strips'
+    // entry-lanes holding a pair, runs' entries that are not padding.
+    double staged = 0.0, stripLanes = 0.0, stripPairs = 0.0, runEntries = 0.0, runPairs = 0.0;
     for (const CsrPairWeights& body : sim.integrator().stressUpdate().staged()) {
+        staged += static_cast<double>(body.bytes());
         for (const MaskedStrip& strip : body.strips) {
             const auto entries = static_cast<std::size_t>(strip.deltaEnd - strip.deltaBegin);
             for (std::size_t j = 0; j < entries * kPairLanes; ++j)
@@ -264,6 +257,7 @@ int main(int argc, char** argv) {
                 runPairs += body.pairs.share[j] != 0.0 ? 1.0 : 0.0;
             }
     }
+    std::printf("staged CSR pairs bytes/particle %.0f (neighbors/staged_pairs.hpp)\n", staged / n);
     if (stripLanes + runEntries > 0.0)
         std::printf(
             "CSR lanes            masked strips %.0f pairs in %.0f lanes (%.0f %%), runs %.0f "
