@@ -280,10 +280,6 @@ struct RunWeights {
     [[gnu::always_inline]] void viscous(L (&w)[3]) const { at.vec(st.gQ, w); }
     [[gnu::always_inline]] void viscousTransposed(L (&w)[3]) const { at.vec(st.gN, w); }
     [[gnu::always_inline]] L hBar(const PairCentre<L>&, auto&&) const { return at.scalar(st.hBar); }
-    [[gnu::always_inline]] void offset(const PairCentre<L>&, auto&&, L (&Y)[3], L& Y2) const {
-        at.vec(st.Y, Y);
-        Y2 = at.scalar(st.Y2);
-    }
     [[gnu::always_inline]] L hourglassWeight(const PairCentre<L>&, auto&&) const {
         return at.scalar(st.hgWeight);
     }
@@ -304,12 +300,6 @@ struct StripWeights {
     template <class Fetch>
     [[gnu::always_inline]] L hBar(const PairCentre<L>& o, const Fetch& fetch) const {
         return 0.5 * (o.h + fetch(kSlotSmoothingLength));
-    }
-    template <class Fetch>
-    [[gnu::always_inline]] void offset(const PairCentre<L>& o, const Fetch& fetch, L (&Y)[3],
-                                       L& Y2) const {
-        for (int r = 0; r < 3; ++r) Y[r] = fetch(kSlotReferenceX + r) - o.X[r];
-        Y2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
     }
     template <class Fetch>
     [[gnu::always_inline]] L hourglassWeight(const PairCentre<L>& o, const Fetch& fetch) const {
@@ -360,8 +350,10 @@ template <bool Viscous, int Hourglass, class L, class Weights, class Fetch>
         }
     }
     if constexpr (Hourglass) {
-        L Y[3], Y2;
-        wt.offset(o, fetch, Y, Y2);
+        // The reference offset X_b − X_c, formed as staging formed it (the same bits).
+        L Y[3];
+        for (int r = 0; r < 3; ++r) Y[r] = fetch(kSlotReferenceX + r) - o.X[r];
+        const L Y2 = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
         L weight = wt.hourglassWeight(o, fetch);
         if constexpr (Hourglass == kSecantHourglass)
             weight *= 0.5 * (o.s + fetch(kSlotHourglassScale));
@@ -560,6 +552,14 @@ void forceLoop(const ForceView& in, const Reference& ref, const StressFactors& s
 
 }  // namespace
 
+void refreshReferenceRows(PairFieldRows& rows, const ParticleFields& fields,
+                          const CsrPairWeights& staged, std::size_t n) {
+    if (staged.gathered.empty()) return;
+    const std::array<const double*, kRowFields - kSlotReferenceX> column{
+        fields.X.component(0), fields.X.component(1), fields.X.component(2)};
+    rows.refresh(kSlotReferenceX, column, staged.gathered, n);
+}
+
 void refreshMotionRows(PairFieldRows& rows, const ParticleFields& fields,
                        const CsrPairWeights& staged, std::size_t n) {
     if (staged.gathered.empty()) return;
@@ -588,11 +588,11 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
     slot[kSlotSmoothingLength] = ref.smoothingLength.data();
     slot[kSlotVolume] = ref.quadVolume.data();
     const bool useRows = rows != nullptr && staged != nullptr && !staged->gathered.empty();
-    if (useRows)  // x and v were refreshed after the drift (refreshMotionRows)
-        rows->refresh(
-            kMotionSlots,
-            std::span<const double* const>(slot.data() + kMotionSlots, slot.data() + kRowFields),
-            staged->gathered, static_cast<std::size_t>(ref.size()));
+    if (useRows)  // x and v after the drift (refreshMotionRows), X once (refreshReferenceRows)
+        rows->refresh(kMotionSlots,
+                      std::span<const double* const>(slot.data() + kMotionSlots,
+                                                     slot.data() + kSlotReferenceX),
+                      staged->gathered, static_cast<std::size_t>(ref.size()));
     const ForceView in{slot,
                        useRows ? rows->data() : nullptr,
                        G != nullptr ? G : ref.G.data(),

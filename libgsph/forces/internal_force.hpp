@@ -85,8 +85,9 @@ struct ForceOptions {
 /// apply while a particle keeps all its bonds. G per particle from `G` (null: ref.G). `staged`:
 /// the body's CsrPairWeights (null: staged here each time; same result). `rows`: with `staged`,
 /// read by the CSR blocks' gathered runs (null: they gather from the SoA fields; the same
-/// result); its slots from kMotionSlots on are refreshed here for staged->gathered, its x and v
-/// must hold `fields` x and v there (refreshMotionRows, after the drift).
+/// result); its slots from kMotionSlots to kSlotReferenceX are refreshed here for
+/// staged->gathered, its x and v must hold `fields` x and v there (refreshMotionRows, after the
+/// drift) and its X the reference positions (refreshReferenceRows, once).
 void internalForce(const Reference& ref, const ParticleFields& fields, const StressFactors& factors,
                    const StencilBlocks& blocks, const ForceOptions& options,
                    std::vector<Vec3>& force, ForceParts& parts, const BondView& bonds = {},
@@ -98,5 +99,10 @@ void internalForce(const Reference& ref, const ParticleFields& fields, const Str
 /// (kinematics/deformation_gradient.hpp) and internalForce read them.
 void refreshMotionRows(PairFieldRows& rows, const ParticleFields& fields,
                        const CsrPairWeights& staged, std::size_t n);
+
+/// Copies the reference positions X of the same particles into their rows, once the runs are
+/// staged (reference data: never refreshed again).
+void refreshReferenceRows(PairFieldRows& rows, const ParticleFields& fields,
+                          const CsrPairWeights& staged, std::size_t n);
 
 }  // namespace gsph

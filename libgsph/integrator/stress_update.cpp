@@ -555,7 +555,10 @@ StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& b
     for (std::size_t a = 0; a < n; ++a) fields_.X.set(a, ref.X[a]);
     for (const BodyRange& body : bodies_)
         blocks_.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
-    for (const StencilBlocks& blocks : blocks_) staged_.push_back(stageCsrPairs(ref, blocks));
+    for (const StencilBlocks& blocks : blocks_) {
+        staged_.push_back(stageCsrPairs(ref, blocks));
+        refreshReferenceRows(rows_, fields_, staged_.back(), n);
+    }
     for (const BodyRange& body : bodies_)
         if (tracksHistory(*body.material)) damageDissipation_.assign(n, 0.0);
     if (bonds_.enabled()) fractureEnergy_.assign(n, 0.0);
@@ -677,6 +680,7 @@ void StressUpdate::restrictTo(ParticleRange owned) {
         }
         body = std::move(kept);
         staged_[b] = stageCsrPairs(ref_, body);
+        refreshReferenceRows(rows_, fields_, staged_[b], static_cast<std::size_t>(ref_.size()));
     }
 }
 

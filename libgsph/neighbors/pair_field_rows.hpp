@@ -2,16 +2,17 @@
 // The far ends' fields of the gathered runs of the CSR blocks (the force's,
 // forces/internal_force.cpp, and the θ-gradients', kinematics/deformation_gradient.cpp) as one
 // row per particle. A run takes 8 pairs of one particle at a time, and their far ends b are
-// anywhere; the pair terms read 37 field components of each (x, v, c, ρ, α, s, F, K, N), the
-// θ-gradients 6 (x, v). Fetched from the SoA fields, that is one gather per component and 8
-// pairs; from rows, 8 row loads per 8 components and a transposition in registers (core/lanes.hpp
-// loadColumns), the same values, several times faster on this project's machine
-// (docs/performance.md).
+// anywhere; the pair terms read 40 field components of each (x, v, c, ρ, α, s, F, K, N and the
+// reference position X), the θ-gradients 6 (x, v). Fetched from the SoA fields, that is one
+// gather per component and 8 pairs; from rows, 8 row loads per 8 components and a transposition
+// in registers (core/lanes.hpp loadColumns), the same values, several times faster on this
+// project's machine (docs/performance.md).
 //
 // Contract: the rows of the listed particles (CsrPairWeights::gathered: every particle a CSR
-// block's run may read) hold their fields at the slots below once refreshed: x and v
-// (kSlotX … kSlotV + 2) after the drift, for the θ-gradients and then the force, the other slots
-// before the force; a reader reads only those rows, only after both refreshes of the same step.
+// block's run may read) hold their fields at the slots below once refreshed: X once, when the
+// runs are staged (reference data); x and v (kSlotX … kSlotV + 2) after the drift, for the
+// θ-gradients and then the force; the other slots before the force. A reader reads only those
+// rows, only after the refreshes of the same step.
 // The other particles' rows are never written (their pages stay unmapped: a lattice whose CSR
 // particles are few pays for their rows only). A row is kRowLength doubles, 64-byte aligned, so
 // that a strip of up to 8 components is one cache line (x and v: the first). Allocation-free
@@ -27,8 +28,8 @@
 namespace gsph {
 
 /// The slot of each field component in a row: x, v (3 each), c, ρ, α, s, F, K, N (row-major,
-/// 9 each). Slots from kRowFields on name fields the rows do not hold (the strips' reference
-/// offset, h and V, read from the SoA fields only).
+/// 9 each), X (3). Slots from kRowFields on name fields the rows do not hold (h and V, read from
+/// the SoA fields only).
 enum PairFieldSlot : int {
     kSlotX = 0,
     kSlotV = 3,
@@ -39,15 +40,14 @@ enum PairFieldSlot : int {
     kSlotF = 10,
     kSlotK = 19,
     kSlotN = 28,
-    kRowFields = 37,
     kSlotReferenceX = 37,
+    kRowFields = 40,
     kSlotSmoothingLength = 40,
     kSlotVolume = 41,
     kPairSlots = 42
 };
 
-/// Doubles per row: kRowFields padded to whole 64-byte lines (and to a multiple of every strip
-/// width).
+/// Doubles per row: kRowFields, whole 64-byte lines (and a multiple of every strip width).
 inline constexpr std::size_t kRowLength = 40;
 
 /// The slots refreshed after the drift: x and v, [kSlotX, kMotionSlots).

@@ -60,15 +60,13 @@ PairRecord crossRecord(const Reference& ref, const BondView& bonds, Index k, Ind
 void put(const Reference& ref, Index c, const PairRecord& r, StagedPairs& st, std::size_t i) {
     const auto ic = static_cast<std::size_t>(c), ib = static_cast<std::size_t>(r.b);
     const std::size_t m = st.stride;
-    const Vec3 Y = ref.X[ib] - ref.X[ic];
     st.b[i] = r.b, st.share[i] = r.share;
-    st.Y2[i] = Y[0] * Y[0] + Y[1] * Y[1] + Y[2] * Y[2];
     st.hBar[i] = 0.5 * (ref.smoothingLength[ic] + ref.smoothingLength[ib]);
     st.hgWeight[i] = 0.5 * (ref.quadVolume[ic] + ref.quadVolume[ib]) * r.W;
     for (std::size_t q = 0; q < 3; ++q) {
         const auto e = static_cast<Eigen::Index>(q);
         st.wOwn[q * m + i] = r.own[e], st.wT[q * m + i] = r.wT[e];
-        st.gQ[q * m + i] = r.gQ[e], st.gN[q * m + i] = r.gN[e], st.Y[q * m + i] = Y[e];
+        st.gQ[q * m + i] = r.gQ[e], st.gN[q * m + i] = r.gN[e];
     }
 }
 
@@ -163,7 +161,7 @@ const StagedPairs& stageIntoScratch(const Reference& ref, const BondView& bonds,
 std::size_t CsrPairWeights::bytes() const {
     return begin.size() * sizeof(std::size_t) + stripAt.size() * sizeof(Index) +
            strips.size() * sizeof(MaskedStrip) + delta.size() * sizeof(Index) +
-           gathered.size() * sizeof(Index) + pairs.stride * (sizeof(Index) + 19 * sizeof(double)) +
+           gathered.size() * sizeof(Index) + pairs.stride * (sizeof(Index) + 15 * sizeof(double)) +
            stripPairs.stride * 11 * sizeof(double);
 }
 

@@ -19,14 +19,16 @@
 //   gQ    the viscous sum's weight: w_cb (own list), 0 (b's list);
 //   gN    the viscous transposed term's: w_cb same space, −w_bc from b's list across spaces
 //         (0 when it does not hold the pair);
-//   Y, Y2 X_b − X_c and |X_b − X_c|² ((Y0² + Y1²) + Y2²); hBar ½(h_c + h_b) (the viscosity's);
+//   hBar ½(h_c + h_b) (the viscosity's);
 //   hgWeight  ½(V_c + V_b) ω W (the hourglass pair's weight, forces/hourglass.hpp); for a pair
 //         across spaces that both lists hold, W is the sum of their kernels' W (the force is
 //         linear in it: the two halves' sum to round-off);
 //   share the hourglass force's share (1 within a space, ½ across, the other half on the
 //         other side), 0 for padding (b = c): the loops read share ≠ 0 as "the pair exists".
-// Y, Y2, hBar and hgWeight are reference data the force would otherwise gather per pair at
-// every step; they are computed here with the same operations, so the bits do not change.
+// hBar and hgWeight are reference data the force would otherwise gather per pair at every step;
+// they are computed here with the same operations, so the bits do not change. The reference
+// offset X_b − X_c is not stored: the force forms it from X in b's row
+// (neighbors/pair_field_rows.hpp), which it loads anyway.
 // Signs and zeros are exact, so a term that is absent adds exactly nothing (a sum that starts
 // at +0 never becomes −0).
 #pragma once
@@ -49,13 +51,13 @@ namespace gsph {
 /// particle's run padded to a multiple of 8 with entries whose `share` is 0.
 struct StagedPairs {
     std::vector<Index> b;
-    std::vector<double> wOwn, wT, gQ, gN, Y, Y2, hBar, hgWeight, share;
+    std::vector<double> wOwn, wT, gQ, gN, hBar, hgWeight, share;
     std::size_t stride = 0;
     void resize(std::size_t n) {
         stride = cacheSpreadStride(n);  // the components of a vector weight in distinct sets
-        b.resize(stride), Y2.resize(stride), hBar.resize(stride), hgWeight.resize(stride);
-        share.resize(stride), wOwn.resize(3 * stride), wT.resize(3 * stride), gQ.resize(3 * stride);
-        gN.resize(3 * stride), Y.resize(3 * stride);
+        b.resize(stride), hBar.resize(stride), hgWeight.resize(stride), share.resize(stride);
+        wOwn.resize(3 * stride), wT.resize(3 * stride), gQ.resize(3 * stride);
+        gN.resize(3 * stride);
     }
 };
 

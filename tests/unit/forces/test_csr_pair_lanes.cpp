@@ -68,7 +68,10 @@ struct Fixture {
         std::vector<Vec3> f(n);
         parts.viscous.assign(n, Vec3::Zero());
         parts.hourglass.assign(n, Vec3::Zero());
-        if (rows != nullptr) refreshMotionRows(*rows, fields, *staged, n);
+        if (rows != nullptr) {
+            refreshReferenceRows(*rows, fields, *staged, n);
+            refreshMotionRows(*rows, fields, *staged, n);
+        }
         internalForce(t.ref, fields, factors, blocks, options, f, parts, bonds, G, staged, rows);
         return f;
     }
