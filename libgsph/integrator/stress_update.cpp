@@ -555,10 +555,8 @@ StressUpdate::StressUpdate(const Reference& ref, const std::vector<BodyRange>& b
     for (std::size_t a = 0; a < n; ++a) fields_.X.set(a, ref.X[a]);
     for (const BodyRange& body : bodies_)
         blocks_.push_back(buildStencilBlocks(ref.pairs, body.begin, body.end, ref.oversetCoupled));
-    for (const StencilBlocks& blocks : blocks_) {
-        staged_.push_back(stageCsrPairs(ref, blocks));
-        refreshReferenceRows(rows_, fields_, staged_.back(), n);
-    }
+    staged_.resize(blocks_.size());
+    for (std::size_t b = 0; b < blocks_.size(); ++b) stageRuns(b);
     for (const BodyRange& body : bodies_)
         if (tracksHistory(*body.material)) damageDissipation_.assign(n, 0.0);
     if (bonds_.enabled()) fractureEnergy_.assign(n, 0.0);
@@ -620,6 +618,11 @@ void StressUpdate::advance(State& state, double dt, bool atRest) {
     throwOnFailure(state);
 }
 
+void StressUpdate::stageRuns(std::size_t b) {
+    staged_[b] = stageCsrPairs(ref_, blocks_[b]);
+    refreshReferenceRows(rows_, fields_, staged_[b], static_cast<std::size_t>(ref_.size()));
+}
+
 void StressUpdate::throwOnFailure(const State& state) const {
     for (std::size_t a = 0; a < failure_.size(); ++a) {
         const auto f = static_cast<Failure>(failure_[a]);
@@ -679,8 +682,7 @@ void StressUpdate::restrictTo(ParticleRange owned) {
             kept.cost.push_back(kept.cost.back() + block.cost());
         }
         body = std::move(kept);
-        staged_[b] = stageCsrPairs(ref_, body);
-        refreshReferenceRows(rows_, fields_, staged_[b], static_cast<std::size_t>(ref_.size()));
+        stageRuns(b);
     }
 }
 

@@ -80,6 +80,8 @@ class StressUpdate {
 
   private:
     void throwOnFailure(const State& state) const;
+    /// Stages body b's CSR pairs from blocks_[b] and writes their far ends' X into the rows.
+    void stageRuns(std::size_t b);
 
     const Reference& ref_;
     const std::vector<BodyRange>& bodies_;
