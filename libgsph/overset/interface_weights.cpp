@@ -21,14 +21,47 @@ struct CorrectedPair {
     Index a = 0, b = 0, k = 0;  // pair k = (a, b) of a's list, both in the band
 };
 
+// The coefficients of one pair's unknowns δγ_ab (3 components j) in the constraints' rows: the
+// same for every j (the rows are offset by j), computed once. (1) at a: X_ab[i] / h_a in rows
+// ra + 3i + j; (2) at a: 1 in ra + kPiola + j (a interior); (2) at b: −V_a / V_b in
+// rb + kPiola + j and (3) at b: −V_a X_ab[i] / (V_b h_b) in rb + kMoment + 3i + j (b interior).
+struct PairCoefficients {
+    Index ra = 0, rb = 0;
+    bool aInterior = false, bInterior = false;
+    double consistency[3] = {}, piolaB = 0.0, moment[3] = {};
+};
+
 // The constraints of the band, scaled so that every row is O(|γ|): (1) by 1/h_a, (2) by
 // 1/V_c, (3) by 1/(V_c h_c). A maps the corrections δγ (3 per pair) to the rows; the solve
-// works on A Aᵀ, whose action is applyA(applyAt(λ)).
+// works on A Aᵀ, whose action is applyA(applyAt(λ)). Each sum adds its terms in the order
+// (1) at a, (2) at a, (2) at b, (3) at b, as forEachCoefficient visits them.
 class BandConstraints {
   public:
-    BandConstraints(const Reference& ref, std::vector<Index> rowOf,
+    BandConstraints(const Reference& ref, const std::vector<Index>& rowOf,
                     std::vector<CorrectedPair> pairs)
-        : ref_(ref), rowOf_(std::move(rowOf)), pairs_(std::move(pairs)) {}
+        : pairs_(std::move(pairs)), coefficients_(pairs_.size()), dim_(ref.dim.value) {
+        // (2) and (3) hold only away from free faces (at a face the Piola sum is its traction).
+        const auto interior = [&](std::size_t a) {
+            return ref.oversetBand[a] == Reference::kBandInterior;
+        };
+        parallelFor(static_cast<Index>(pairs_.size()), [&](Index u) {
+            const CorrectedPair& p = pairs_[static_cast<std::size_t>(u)];
+            PairCoefficients& c = coefficients_[static_cast<std::size_t>(u)];
+            const auto ia = static_cast<std::size_t>(p.a), ib = static_cast<std::size_t>(p.b);
+            c.ra = kRows * rowOf[ia];
+            c.rb = kRows * rowOf[ib];
+            const Vec3 Xab = ref.X[ib] - ref.X[ia];
+            const double ha = ref.smoothingLength[ia], hb = ref.smoothingLength[ib];
+            const double Va = ref.quadVolume[ia], Vb = ref.quadVolume[ib];
+            c.aInterior = interior(ia);
+            c.bInterior = interior(ib);
+            for (int i = 0; i < dim_; ++i) {
+                c.consistency[i] = Xab[i] / ha;
+                c.moment[i] = -Va * Xab[i] / (Vb * hb);
+            }
+            c.piolaB = -Va / Vb;
+        });
+    }
 
     std::size_t unknowns() const { return 3 * pairs_.size(); }
     const std::vector<CorrectedPair>& pairs() const { return pairs_; }
@@ -37,28 +70,21 @@ class BandConstraints {
     // visit(row, coefficient). In 2-D the out-of-plane component is not an unknown.
     template <class Visit>
     void forEachCoefficient(std::size_t u, int j, Visit&& visit) const {
-        const CorrectedPair& p = pairs_[u];
-        const auto ia = static_cast<std::size_t>(p.a), ib = static_cast<std::size_t>(p.b);
-        const Index ra = kRows * rowOf_[ia], rb = kRows * rowOf_[ib];
-        const Vec3 Xab = ref_.X[ib] - ref_.X[ia];
-        const double ha = ref_.smoothingLength[ia], hb = ref_.smoothingLength[ib];
-        const double Va = ref_.quadVolume[ia], Vb = ref_.quadVolume[ib];
-        const int d = ref_.dim.value;
-        for (int i = 0; i < d; ++i) visit(ra + 3 * i + j, Xab[i] / ha);  // (1) at a
-        if (interior(ia)) visit(ra + kPiola + j, 1.0);                   // (2) at a: own pair
-        if (interior(ib)) {                                              // at b: incoming
-            visit(rb + kPiola + j, -Va / Vb);                            // (2)
-            for (int i = 0; i < d; ++i) visit(rb + kMoment + 3 * i + j, -Va * Xab[i] / (Vb * hb));
+        const PairCoefficients& c = coefficients_[u];
+        for (int i = 0; i < dim_; ++i) visit(c.ra + 3 * i + j, c.consistency[i]);
+        if (c.aInterior) visit(c.ra + kPiola + j, 1.0);
+        if (c.bInterior) {
+            visit(c.rb + kPiola + j, c.piolaB);
+            for (int i = 0; i < dim_; ++i) visit(c.rb + kMoment + 3 * i + j, c.moment[i]);
         }
     }
 
     // g = Aᵀ λ (per unknown: independent, so parallel and deterministic).
     void applyAt(const Eigen::VectorXd& lambda, Eigen::VectorXd& g) const {
-        const int d = ref_.dim.value;
         parallelFor(static_cast<Index>(pairs_.size()), [&](Index u) {
             for (int j = 0; j < 3; ++j) {
                 double sum = 0.0;
-                if (j < d)
+                if (j < dim_)
                     forEachCoefficient(static_cast<std::size_t>(u), j,
                                        [&](Index row, double c) { sum += c * lambda[row]; });
                 g[3 * u + j] = sum;
@@ -66,33 +92,40 @@ class BandConstraints {
         });
     }
 
-    // r = A g (a scatter into the rows; serial, in pair order: the same bits on every run).
+    // r = A g (a scatter into the rows; serial, in pair order: the same bits on every run. A
+    // gather per particle in parallel was slower: it reads g at random where this writes r).
     void applyA(const Eigen::VectorXd& g, Eigen::VectorXd& r) const {
         r.setZero();
-        const int d = ref_.dim.value;
-        for (std::size_t u = 0; u < pairs_.size(); ++u)
-            for (int j = 0; j < d; ++j)
-                forEachCoefficient(u, j, [&](Index row, double c) {
-                    r[row] += c * g[static_cast<Eigen::Index>(3 * u) + j];
-                });
+        double* out = r.data();
+        for (std::size_t u = 0; u < pairs_.size(); ++u) {
+            const PairCoefficients& c = coefficients_[u];
+            const double* gu = g.data() + 3 * u;
+            double* a = out + c.ra;
+            double* b = out + c.rb;
+            for (int i = 0; i < dim_; ++i)
+                for (int j = 0; j < dim_; ++j) a[3 * i + j] += c.consistency[i] * gu[j];
+            if (c.aInterior)
+                for (int j = 0; j < dim_; ++j) a[kPiola + j] += 1.0 * gu[j];
+            if (c.bInterior) {
+                for (int j = 0; j < dim_; ++j) b[kPiola + j] += c.piolaB * gu[j];
+                for (int i = 0; i < dim_; ++i)
+                    for (int j = 0; j < dim_; ++j) b[kMoment + 3 * i + j] += c.moment[i] * gu[j];
+            }
+        }
     }
 
     Eigen::VectorXd diagonalOfNormalMatrix(Index rows) const {
         Eigen::VectorXd diag = Eigen::VectorXd::Zero(rows);
-        const int d = ref_.dim.value;
         for (std::size_t u = 0; u < pairs_.size(); ++u)
-            for (int j = 0; j < d; ++j)
+            for (int j = 0; j < dim_; ++j)
                 forEachCoefficient(u, j, [&](Index row, double c) { diag[row] += c * c; });
         return diag;
     }
 
   private:
-    // (2) and (3) hold only away from free faces (at a face the Piola sum is its traction).
-    bool interior(std::size_t a) const { return ref_.oversetBand[a] == Reference::kBandInterior; }
-
-    const Reference& ref_;
-    std::vector<Index> rowOf_;
     std::vector<CorrectedPair> pairs_;
+    std::vector<PairCoefficients> coefficients_;
+    int dim_;
 };
 
 }  // namespace
