@@ -97,6 +97,14 @@ StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end,
             taken[static_cast<std::size_t>(first + m * stride - begin)] = 1;
         appendBlocks(out.blocks, first, count, stride, stencilOf(first));
     };
+    // A particle beside one that must take the CSR path (a ± 1) joins no run across rows: it
+    // would cut the CSR particles' rows into pieces shorter than a masked strip's 8 lanes
+    // (neighbors/staged_pairs.hpp), whose pairs then go to gathered runs, dearer per pair than
+    // the strided block saves (an O-grid's annulus whose outer ring alone is off the band).
+    const auto besideCsrOnly = [&](Index a) {
+        return (a > begin && !stencilAllowed(a - 1)) || (a + 1 < end && !stencilAllowed(a + 1));
+    };
+    const auto freeAcross = [&](Index a) { return free(a) && !besideCsrOnly(a); };
     // Runs of consecutive particles first, then runs across rows among the rest: the strides
     // tried are a's own positive neighbour offsets, shortest first.
     for (Index a = begin; a < end;) {
@@ -107,12 +115,13 @@ StencilBlocks buildStencilBlocks(const PairList& pairs, Index begin, Index end,
         a = runEnd;
     }
     for (Index a = begin; a < end; ++a) {
-        if (!free(a)) continue;
+        if (!freeAcross(a)) continue;
         for (Index k = pairs.begin(a); k < pairs.end(a); ++k) {
             const Index stride = pairs.neighbor[static_cast<std::size_t>(k)] - a;
             if (stride <= 1) continue;
             Index count = 1;
-            while (free(a + count * stride) && sameStencil(pairs, a, a + count * stride)) ++count;
+            while (freeAcross(a + count * stride) && sameStencil(pairs, a, a + count * stride))
+                ++count;
             if (count >= kMinStencilRun) {
                 take(a, count, stride);
                 break;

@@ -13,7 +13,9 @@
 // The lattice's faces normal to the fastest index (its "corner columns": a run along that index
 // is at most two particles long there) share a stencil along the next index instead: particles
 // a, a + s, a + 2s, ... with s the row length. Such a block has stride s; its strips gather the
-// fields (core/lanes.hpp) and still run far faster than the CSR path.
+// fields (core/lanes.hpp) and still run far faster than the CSR path. A particle beside one
+// that must take the CSR path joins no such block: the CSR particles' rows stay whole, long
+// enough for the CSR path's masked strips (neighbors/staged_pairs.hpp).
 //
 // Invariants: every particle of [begin, end) is in exactly one block, at most kMaxBlock
 // particles each, blocks sorted by their first particle; for a stencil block and every a in it,

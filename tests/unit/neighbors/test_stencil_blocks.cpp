@@ -2,7 +2,8 @@
 // The partition of a body into stencil blocks (neighbors/stencil_blocks.hpp): every particle in
 // exactly one block, each stencil block's particles have exactly its stencil as their list, and
 // on a lattice only the corners of the box are left to the CSR path (the faces normal to the
-// fastest index form blocks across rows).
+// fastest index form blocks across rows, unless they would cut the rows of particles flagged for
+// the CSR path into pieces).
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -80,6 +81,28 @@ TEST(StencilBlocks, FlaggedParticlesStayOnTheCsrPath) {
             }
     }
     EXPECT_GT(onStencils, ref.size() / 4);  // the rest still share stencils
+}
+
+// An annulus-like body: in every row of 10 the first 8 particles are flagged (an overset band),
+// the last 2 lie near the wall normal to the fastest index and would share a stencil across
+// rows. Taken into strided blocks they would cut the flagged rows into blocks of 8; left to the
+// CSR path, all the particles are one CSR run, split into ⌈1000 / kMaxBlock⌉ blocks.
+TEST(StencilBlocks, RunsAcrossRowsLeaveTheCsrRowsWhole) {
+    const Reference ref = box({10, 10, 10});
+    std::vector<std::uint8_t> csrOnly(static_cast<std::size_t>(ref.size()), 0);
+    for (Index a = 0; a < ref.size(); ++a) csrOnly[static_cast<std::size_t>(a)] = a % 10 < 8;
+    const StencilBlocks sb = buildStencilBlocks(ref.pairs, 0, ref.size(), csrOnly);
+    Index csr = 0, csrBlocks = 0;
+    for (const ParticleBlock& b : sb.blocks)
+        if (b.stencil == kNoStencil) csr += b.size(), ++csrBlocks;
+    EXPECT_EQ(csr, ref.size());
+    EXPECT_EQ(csrBlocks, (ref.size() + kMaxBlock - 1) / kMaxBlock);
+    // Without flags the same two columns do form blocks across rows.
+    const StencilBlocks plain = buildStencilBlocks(ref.pairs, 0, ref.size());
+    Index strided = 0;
+    for (const ParticleBlock& b : plain.blocks)
+        if (b.stencil != kNoStencil && b.stride > 1) strided += b.size();
+    EXPECT_GT(strided, 0);
 }
 
 }  // namespace
