@@ -96,22 +96,11 @@ class BandConstraints {
     // gather per particle in parallel was slower: it reads g at random where this writes r).
     void applyA(const Eigen::VectorXd& g, Eigen::VectorXd& r) const {
         r.setZero();
-        double* out = r.data();
-        for (std::size_t u = 0; u < pairs_.size(); ++u) {
-            const PairCoefficients& c = coefficients_[u];
-            const double* gu = g.data() + 3 * u;
-            double* a = out + c.ra;
-            double* b = out + c.rb;
-            for (int i = 0; i < dim_; ++i)
-                for (int j = 0; j < dim_; ++j) a[3 * i + j] += c.consistency[i] * gu[j];
-            if (c.aInterior)
-                for (int j = 0; j < dim_; ++j) a[kPiola + j] += 1.0 * gu[j];
-            if (c.bInterior) {
-                for (int j = 0; j < dim_; ++j) b[kPiola + j] += c.piolaB * gu[j];
-                for (int i = 0; i < dim_; ++i)
-                    for (int j = 0; j < dim_; ++j) b[kMoment + 3 * i + j] += c.moment[i] * gu[j];
-            }
-        }
+        for (std::size_t u = 0; u < pairs_.size(); ++u)
+            for (int j = 0; j < dim_; ++j)
+                forEachCoefficient(u, j, [&](Index row, double c) {
+                    r[row] += c * g[static_cast<Eigen::Index>(3 * u) + j];
+                });
     }
 
     Eigen::VectorXd diagonalOfNormalMatrix(Index rows) const {
