@@ -271,8 +271,11 @@ struct WeightRows {
 };
 
 // The weights of staged entries j … j + width − 1 of a run (StagedPairs: all stored).
-template <class L>
+// SumsOwn: the run sums wOwn itself (a run staged afresh); else the stress term's Σ w comes
+// from CsrPairWeights::ownSum.
+template <class L, bool SumsOwn>
 struct RunWeights {
+    static constexpr bool kSumsOwn = SumsOwn;
     const StagedPairs& st;
     WeightRows<L> at;
     [[gnu::always_inline]] void own(L (&w)[3]) const { at.vec(st.wOwn, w); }
@@ -291,6 +294,7 @@ struct RunWeights {
 // hourglass weight formed from the neighbours' X, h and V as a run's staging forms them.
 template <class L>
 struct StripWeights {
+    static constexpr bool kSumsOwn = false;  // CsrPairWeights::ownSum has Σ w
     const StripPairs& sp;
     WeightRows<L> at;
     [[gnu::always_inline]] void own(L (&w)[3]) const { at.vec(sp.wOwn, w); }
@@ -324,8 +328,10 @@ template <bool Viscous, int Hourglass, class L, class Weights, class Fetch>
     };
     const MaskOf<L> valid = wt.valid() != 0.0;
     L w[3];
-    wt.own(w);
-    for (std::size_t r = 0; r < 3; ++r) s.sumW[r] += w[r];
+    if constexpr (Weights::kSumsOwn) {
+        wt.own(w);
+        for (std::size_t r = 0; r < 3; ++r) s.sumW[r] += w[r];
+    }
     wt.transposed(w);
     L Kw[3];
     times(kSlotK, w, Kw);
@@ -380,7 +386,7 @@ struct CsrSums {
 // j mod kPairLanes), reduced in the fixed order of sumPairLanes, added into column i of out.
 // FromRows: the neighbours' fields are read as columns of in.rows (every b is one of
 // CsrPairWeights::gathered), else gathered from the SoA fields; the same values either way.
-template <bool Viscous, int Hourglass, bool FromRows, class L>
+template <bool Viscous, int Hourglass, bool FromRows, bool SumsOwn, class L>
 [[gnu::always_inline]] inline void gatheredPairs(const ForceView& in, const StagedPairs& st,
                                                  std::size_t begin, Index size, Index c, Index i,
                                                  CsrSums& out) {
@@ -394,7 +400,7 @@ template <bool Viscous, int Hourglass, bool FromRows, class L>
         for (int u = 0; u < strips; ++u) {
             const std::size_t j = begin + static_cast<std::size_t>(j0 + u * width);
             const Index* b = st.b.data() + j;
-            const RunWeights<L> weights{st, {st.stride, j}};
+            const RunWeights<L, SumsOwn> weights{st, {st.stride, j}};
             if constexpr (FromRows) {
                 L column[kRowLength];
                 for (std::size_t first = 0; first < kRowLength; first += width)
@@ -419,7 +425,8 @@ template <bool Viscous, int Hourglass, bool FromRows, class L>
             column[r][i] += sumPairLanes<L>(lanes);
         }
     };
-    add(&PairSums<L>::sumW, out.sumW), add(&PairSums<L>::fK, out.fK);
+    if constexpr (SumsOwn) add(&PairSums<L>::sumW, out.sumW);
+    add(&PairSums<L>::fK, out.fK);
     add(&PairSums<L>::sumQW, out.sumQW), add(&PairSums<L>::fN, out.fN);
     add(&PairSums<L>::fh, out.fh);
 }
@@ -474,23 +481,25 @@ template <bool Viscous, int Hourglass, class L>
     });
     // The rows hold the far ends of the CSR blocks' runs (not of a stencil block's here).
     const bool fromRows = in.rows != nullptr && block.stencil == kNoStencil;
-    const auto run = [&](const StagedPairs& st, std::size_t begin, Index size, Index c, Index i)
-        __attribute__((always_inline)) {
-        if (fromRows)
-            gatheredPairs<Viscous, Hourglass, true, L>(in, st, begin, size, c, i, s);
-        else
-            gatheredPairs<Viscous, Hourglass, false, L>(in, st, begin, size, c, i, s);
-    };
     for (Index i = 0; i < len; ++i) {
         const Index c = block.particle(i);
         if (afresh[i]) {
             Index size = 0;
             const StagedPairs& st = stageIntoScratch(ref, bonds, c, size);
-            run(st, 0, size, c, i);
+            if (fromRows)
+                gatheredPairs<Viscous, Hourglass, true, true, L>(in, st, 0, size, c, i, s);
+            else
+                gatheredPairs<Viscous, Hourglass, false, true, L>(in, st, 0, size, c, i, s);
         } else {
             const CsrPairWeights& w = *in.staged;
             const auto ic = static_cast<std::size_t>(c);
-            run(w.pairs, w.begin[ic], static_cast<Index>(w.begin[ic + 1] - w.begin[ic]), c, i);
+            const auto size = static_cast<Index>(w.begin[ic + 1] - w.begin[ic]);
+            if (fromRows)
+                gatheredPairs<Viscous, Hourglass, true, false, L>(in, w.pairs, w.begin[ic], size, c,
+                                                                  i, s);
+            else
+                gatheredPairs<Viscous, Hourglass, false, false, L>(in, w.pairs, w.begin[ic], size,
+                                                                   c, i, s);
         }
     }
     leaveLanes<L>();
@@ -499,9 +508,10 @@ template <bool Viscous, int Hourglass, class L>
             return Vec3(a[0][i], a[1][i], a[2][i]);
         };
         const Index c = block.particle(i);
-        finishParticle<Viscous, Hourglass>(
-            sf, c, sf.K[static_cast<std::size_t>(c)] * col(s.sumW) + col(s.fK), col(s.sumQW),
-            col(s.fN), col(s.fh), force, parts);
+        const auto ic = static_cast<std::size_t>(c);
+        const Vec3 sumW = afresh[i] ? col(s.sumW) : in.staged->ownSum[ic];
+        finishParticle<Viscous, Hourglass>(sf, c, sf.K[ic] * sumW + col(s.fK), col(s.sumQW),
+                                           col(s.fN), col(s.fh), force, parts);
     }
 }
 

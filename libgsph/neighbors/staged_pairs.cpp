@@ -162,7 +162,7 @@ std::size_t CsrPairWeights::bytes() const {
     return begin.size() * sizeof(std::size_t) + stripAt.size() * sizeof(Index) +
            strips.size() * sizeof(MaskedStrip) + delta.size() * sizeof(Index) +
            gathered.size() * sizeof(Index) + pairs.stride * (sizeof(Index) + 15 * sizeof(double)) +
-           stripPairs.stride * 11 * sizeof(double);
+           stripPairs.stride * 11 * sizeof(double) + ownSum.size() * sizeof(Vec3);
 }
 
 CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks) {
@@ -261,7 +261,41 @@ CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks) 
             }
         }
     });
+    out.ownSum.assign(un, Vec3::Zero());
+    parallelFor(n,
+                [&](Index c) { out.ownSum[static_cast<std::size_t>(c)] = ownWeightSum(out, c); });
     return out;
+}
+
+Vec3 ownWeightSum(const CsrPairWeights& w, Index c) {
+    const auto ic = static_cast<std::size_t>(c);
+    Vec3 sum = Vec3::Zero();
+    // A masked strip's lane sums its entries in order from +0 (internal_force.cpp); c is lane
+    // i of the strip that starts at c − i, if any.
+    for (Index i = 0; i < kPairLanes && c - i >= 0; ++i) {
+        const Index t = w.stripAt[static_cast<std::size_t>(c - i)];
+        if (t < 0) continue;
+        const MaskedStrip& strip = w.strips[static_cast<std::size_t>(t)];
+        const StripPairs& sp = w.stripPairs;
+        for (Index e = 0; e < strip.deltaEnd - strip.deltaBegin; ++e) {
+            const std::size_t j = strip.base + static_cast<std::size_t>(e * kPairLanes + i);
+            for (std::size_t q = 0; q < 3; ++q)
+                sum[static_cast<Eigen::Index>(q)] += sp.wOwn[q * sp.stride + j];
+        }
+        break;
+    }
+    // A run's pairs go to kPairLanes lanes (pair j to lane j mod kPairLanes), reduced in the
+    // fixed order of sumPairLanes and added to the strip's sum.
+    const StagedPairs& st = w.pairs;
+    for (std::size_t q = 0; q < 3; ++q) {
+        Lanes2 lane[kPairLanes / kLanesOf<Lanes2>] = {};
+        for (std::size_t j = w.begin[ic]; j < w.begin[ic + 1]; ++j) {
+            const std::size_t l = (j - w.begin[ic]) % kPairLanes;
+            lane[l / 2][l % 2] += st.wOwn[q * st.stride + j];
+        }
+        sum[static_cast<Eigen::Index>(q)] += sumPairLanes<Lanes2>(lane);
+    }
+    return sum;
 }
 
 }  // namespace gsph

@@ -101,6 +101,10 @@ struct CsrPairWeights {
     std::vector<MaskedStrip> strips;
     std::vector<Index> delta;
     StripPairs stripPairs;
+    /// Per CSR particle: Σ wOwn over its strip's and its run's entries, added as the force's
+    /// lanes add them (ownWeightSum), so that the force takes the stress term's Σ w of a particle
+    /// whose staged weights hold from here instead of streaming wOwn again (the same bits).
+    std::vector<Vec3> ownSum;
     /// The particles whose fields the runs of these blocks' CSR particles may read, ascending:
     /// each CSR particle (its padding's b), the neighbours of its own list and the owners of its
     /// pairs from other lists (all of them: a particle whose bonds changed stages every pair
@@ -110,6 +114,10 @@ struct CsrPairWeights {
     std::size_t bytes() const;
 };
 CsrPairWeights stageCsrPairs(const Reference& ref, const StencilBlocks& blocks);
+
+/// Σ wOwn over CSR particle c's staged entries, in the force's order: its masked strip's lane
+/// (entries in order from +0), plus its run's kPairLanes lanes reduced by sumPairLanes.
+Vec3 ownWeightSum(const CsrPairWeights& w, Index c);
 
 /// Which of a CSR block's particles read `staged` and which stage their pairs afresh: afresh[i]
 /// for column i when there is nothing staged, the block was not staged (a stencil block on the
