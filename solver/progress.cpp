@@ -121,6 +121,23 @@ void ProgressBar::update(double time, long step) {
     drawn_ = true;
 }
 
+void ProgressBar::status(const std::string& text) {
+    if (mode_ == Mode::Off) return;
+    const double wall =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
+    if (wall - lastDraw_ < (mode_ == Mode::Bar ? 0.2 : lineInterval_)) return;
+    lastDraw_ = wall;
+    if (mode_ == Mode::Lines) {
+        std::printf("%s\n", text.c_str());
+        std::fflush(stdout);
+        return;
+    }
+    const auto room = static_cast<std::size_t>(std::max(terminalColumns() - 1, 0));
+    std::printf("\r%s\033[K", text.substr(0, room).c_str());
+    std::fflush(stdout);
+    drawn_ = true;
+}
+
 void ProgressBar::clear() {
     if (mode_ != Mode::Bar || !drawn_) return;
     std::printf("\r\033[K");  // carriage return, erase to the end of the line

@@ -6,7 +6,7 @@
 // `lineInterval` seconds of wall time. The ETA comes from the rate of simulated time over the
 // last 10 s of wall time (the time step shrinks after an impact: the run's mean rate would
 // promise too much). Rates count only this invocation's steps, so they stay right after a
-// restart.
+// restart. Before the first step it can show a set-up stage's progress instead (status).
 #pragma once
 
 #include <array>
@@ -28,6 +28,10 @@ class ProgressBar {
     void start(double time, long step);
     /// Redraws the bar if 0.2 s have passed since the last draw (a line: `lineInterval`).
     void update(double time, long step);
+    /// Shows `text` instead of the bar (a set-up stage's progress, before the first step; after
+    /// start), at the bar's pace: redrawn at most 5 times a second on a terminal, a line every
+    /// `lineInterval` elsewhere (none for a stage shorter than that).
+    void status(const std::string& text);
     /// Erases the bar (before a log line is printed); the next update redraws it.
     void clear();
 

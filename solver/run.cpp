@@ -416,7 +416,7 @@ class RunOutputs {
 // The case's simulation, built from the case and its particle file (constraints set, not
 // started).
 std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleFile& file,
-                                            BodySetup& bodies) {
+                                            BodySetup& bodies, ProgressBar::Mode progress) {
     SetConditions sets = matchSets(c, file);
     SolverOptions solverOptions;
     solverOptions.cfl = c.cfl;
@@ -440,6 +440,20 @@ std::unique_ptr<Simulation> buildSimulation(const CaseConfig& c, const ParticleF
                              std::to_string(wanted) + "-D particle file, and " +
                              c.particles.string() + " is " + std::to_string(file.dimension) + "-D");
         ref.dim.axisymmetric = c.dimension == "axisymmetric";
+    }
+    {
+        // The derived fields here rather than silently in Simulation: on a large overset band
+        // the interface weights' solve takes minutes, and the user sees it advance.
+        ProgressBar setup(progress, c.endTime, ref.size());
+        setup.start(0.0, 0);
+        completeReference(ref, SearchMethod::CellList, [&](int iteration, double residual) {
+            char text[160];
+            std::snprintf(
+                text, sizeof text,
+                "set-up: overset interface weights, CG iteration %d, residual %.1e (to 1e-14)",
+                iteration, residual);
+            setup.status(text);
+        });
     }
     auto sim =
         std::make_unique<Simulation>(std::move(ref), std::move(bodies.materials), solverOptions);
@@ -597,7 +611,8 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
             for (const std::filesystem::path& p : earlier) std::filesystem::remove(p);
     }
     BodySetup bodies = matchBodies(c, file);
-    const std::unique_ptr<Simulation> simulation = buildSimulation(c, file, bodies);
+    const std::unique_ptr<Simulation> simulation =
+        buildSimulation(c, file, bodies, options.progress);
     Simulation& sim = *simulation;
     const Reference& ref = sim.reference();
     const bool split = options.domain && options.domain->processes() > 1;

@@ -119,7 +119,7 @@ class BandConstraints {
 
 }  // namespace
 
-void correctInterfaceWeights(Reference& ref) {
+void correctInterfaceWeights(Reference& ref, const InterfaceSolveProgress& progress) {
     ref.correctionBegin.clear();
     ref.pairCorrection.clear();
     ref.mirrorCorrection.clear();
@@ -211,6 +211,7 @@ void correctInterfaceWeights(Reference& ref) {
         direction = z + (rzNext / rz) * direction;
         rz = rzNext;
         ++it;
+        if (progress) progress(it, residual.norm() / rhsNorm);
     }
     // The achieved residual, recomputed from the corrections themselves.
     Eigen::VectorXd correction(A.unknowns()), achieved(rows);

@@ -32,14 +32,21 @@
 // added to the table's gradW) and those of the mirrors (Reference::correctionBegin).
 #pragma once
 
+#include <functional>
+
 #include "particles/reference.hpp"
 
 namespace gsph {
+
+/// The interface weights' solve reporting its progress: called after each conjugate-gradient
+/// iteration with its number and the relative residual (the solve stops below 1e-14), on the
+/// calling thread. On a large band the solve is most of a run's set-up (docs/performance.md).
+using InterfaceSolveProgress = std::function<void(int iteration, double relativeResidual)>;
 
 /// Fills ref.correctionBegin, ref.pairCorrection and ref.mirrorCorrection (empty when there is
 /// no band) and adds every particle with a corrected pair to ref.oversetCoupled (CSR path).
 /// Needs ref.G, ref.quadVolume, ref.smoothingLength, ref.oversetBand (markOversetBand).
 /// Throws NumericalError when the constraints cannot be met (a band without enough pairs).
-void correctInterfaceWeights(Reference& ref);
+void correctInterfaceWeights(Reference& ref, const InterfaceSolveProgress& progress = {});
 
 }  // namespace gsph

@@ -49,9 +49,10 @@ Reference buildReference(const ParticleFile& f, std::span<const double> densityP
     return ref;
 }
 
-void completeReference(Reference& ref, SearchMethod search) {
+void completeReference(Reference& ref, SearchMethod search,
+                       const InterfaceSolveProgress& progress) {
     if (ref.pairs.particles() != ref.size()) buildPairs(ref, search);
-    if (ref.G.size() != ref.X.size()) computeGeometry(ref);
+    if (ref.G.size() != ref.X.size()) computeGeometry(ref, progress);
 }
 
 }  // namespace gsph

@@ -11,6 +11,7 @@
 
 #include "io/particle_file.hpp"
 #include "neighbors/theta_search.hpp"
+#include "overset/interface_weights.hpp"
 #include "particles/reference.hpp"
 
 namespace gsph {
@@ -29,7 +30,9 @@ Reference buildReference(const ParticleFile& file, std::span<const double> densi
 
 /// Fills the derived fields of a reference that has its particles: the pairs (unless
 /// ref.pairs already holds them) and the geometry (unless ref.G does). Throws InputError on
-/// an invalid reference (buildPairs, computeGeometry).
-void completeReference(Reference& ref, SearchMethod search = SearchMethod::CellList);
+/// an invalid reference (buildPairs, computeGeometry). `progress`: the overset interface
+/// weights' solve, the long part of a large band's set-up (overset/interface_weights.hpp).
+void completeReference(Reference& ref, SearchMethod search = SearchMethod::CellList,
+                       const InterfaceSolveProgress& progress = {});
 
 }  // namespace gsph

@@ -92,7 +92,7 @@ void normalizeBodyVolumes(Reference& ref) {
 
 }  // namespace
 
-void computeGeometry(Reference& ref) {
+void computeGeometry(Reference& ref, const InterfaceSolveProgress& progress) {
     const Index n = ref.size();
     if (ref.pairs.particles() != n)
         throw Error("computeGeometry: pairs not built for this reference");
@@ -149,7 +149,7 @@ void computeGeometry(Reference& ref) {
     }
     if (ref.massBasis == MassBasis::NormalizedQuadratureVolume) normalizeBodyVolumes(ref);
     markOversetBand(ref);
-    correctInterfaceWeights(ref);
+    correctInterfaceWeights(ref, progress);
 }
 
 }  // namespace gsph

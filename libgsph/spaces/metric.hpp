@@ -15,6 +15,7 @@
 
 #include <cstdint>
 
+#include "overset/interface_weights.hpp"
 #include "particles/reference.hpp"
 
 namespace gsph {
@@ -33,7 +34,8 @@ struct ParticleMetric {
 ParticleMetric particleMetric(const Reference& ref, Index a, const std::uint8_t* intact = nullptr);
 
 /// Requires ref.pairs (buildPairs). Throws NumericalError naming the particle if B or M is
-/// singular or M inverts the orientation (det M ≤ 0).
-void computeGeometry(Reference& ref);
+/// singular or M inverts the orientation (det M ≤ 0). `progress`: the interface weights' solve
+/// (overset/interface_weights.hpp).
+void computeGeometry(Reference& ref, const InterfaceSolveProgress& progress = {});
 
 }  // namespace gsph

@@ -488,5 +488,42 @@ TEST_F(Restart, ProgressBarShowsOnATerminal) {
     EXPECT_GT(bars, 0) << narrow.out.substr(0, 2000);
 }
 
+TEST_F(Restart, OversetSetUpShowsTheInterfaceWeightsSolveOnATerminal) {
+    // The quick start's O-grid, coarser: its band's interface weights are solved during set-up,
+    // and the bar's line follows the solve's iterations (the first one drawn at once) and fits
+    // a narrow terminal; into a pipe nothing of it (a line a minute only).
+    const fs::path ogrid = dir_ / "ogrid.h5";
+    const auto made = runCommand(std::string(GSPH_PREPROC_EXE) + " " +
+                                 quote((test::kSourceDir / "geometries/taylor_bar.geo").string()) +
+                                 " --set n=4 --set nr=2 --set nz=12 -o " + quote(ogrid.string()));
+    ASSERT_EQ(made.status, 0) << made.err;
+    const fs::path taylor = test::kSourceDir / "cases/taylor_bar/case.toml";
+    const auto onTerminal = [&](int columns, const std::string& name) {
+        return runCommand("script -qec " +
+                          quote("stty cols " + std::to_string(columns) + "; " +
+                                solve(taylor, ogrid, dir_ / name, "--end-time 2e-7")) +
+                          " /dev/null");
+    };
+    const auto r = onTerminal(160, "tty");
+    ASSERT_EQ(r.status, 0) << r.err;
+    std::smatch m;
+    const std::regex first(
+        "\\rset-up: overset interface weights, CG iteration 1, residual "
+        "[-+.e0-9]+ \\(to 1e-14\\)");
+    EXPECT_TRUE(std::regex_search(r.out, m, first)) << r.out.substr(0, 2000);
+    const auto narrow = onTerminal(50, "narrow");
+    ASSERT_EQ(narrow.status, 0) << narrow.err;
+    int lines = 0;
+    for (std::size_t at = narrow.out.find("\rset-up:"); at != std::string::npos;
+         at = narrow.out.find("\rset-up:", at + 1), ++lines) {
+        const std::size_t end = narrow.out.find_first_of("\r\n\033", at + 1);
+        EXPECT_LE(end - at - 1, 49u) << narrow.out.substr(at + 1, end - at - 1);
+    }
+    EXPECT_GT(lines, 0) << narrow.out.substr(0, 2000);
+    const auto piped = runCommand(solve(taylor, ogrid, dir_ / "pipe", "--end-time 2e-7"));
+    ASSERT_EQ(piped.status, 0) << piped.err;
+    EXPECT_EQ(piped.out.find("set-up: overset"), std::string::npos) << piped.out;
+}
+
 }  // namespace
 }  // namespace gsph

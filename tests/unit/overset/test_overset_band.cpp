@@ -4,13 +4,15 @@
 // one, its transposed cross pairs are exactly the pairs across spaces, the particles whose
 // support reaches a free face are marked so; the interface weights
 // (overset/interface_weights.hpp) meet their three constraints at the band's particles, which
-// the uncorrected weights do not, and touch nothing outside the band.
+// the uncorrected weights do not, and touch nothing outside the band; their solve reports its
+// progress.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <map>
 
+#include "overset/interface_weights.hpp"
 #include "support/overset_fixtures.hpp"
 
 namespace gsph {
@@ -211,6 +213,28 @@ TEST(InterfaceWeights, CorrectOnlyPairsWithinTheBand) {
         }
     }
     EXPECT_GT(corrected, 0);
+}
+
+// The solve reports every conjugate-gradient iteration in order, the last below its tolerance,
+// and reporting changes nothing: a second solve with a report gives the first's bits.
+TEST(InterfaceWeights, ReportEveryIterationOfTheirSolve) {
+    Reference ref = twoBlocks(2, 8, 2).ref;
+    const std::vector<Vec3> first = ref.pairCorrection;
+    const int iterations = ref.interfaceSolve.iterations;
+    ASSERT_GT(iterations, 1);
+    std::vector<int> seen;
+    double last = 1.0;
+    correctInterfaceWeights(ref, [&](int iteration, double residual) {
+        seen.push_back(iteration);
+        EXPECT_TRUE(std::isfinite(residual) && residual >= 0.0) << iteration;
+        last = residual;
+    });
+    ASSERT_EQ(static_cast<int>(seen.size()), iterations);
+    for (int i = 0; i < iterations; ++i) EXPECT_EQ(seen[static_cast<std::size_t>(i)], i + 1);
+    EXPECT_LE(last, 1e-14);
+    EXPECT_EQ(ref.interfaceSolve.iterations, iterations);
+    ASSERT_EQ(ref.pairCorrection.size(), first.size());
+    EXPECT_TRUE(std::equal(first.begin(), first.end(), ref.pairCorrection.begin()));
 }
 
 }  // namespace
