@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <array>
+#include <type_traits>
 
 #include "core/lanes.hpp"
 #include "core/parallel.hpp"
@@ -481,25 +482,27 @@ template <bool Viscous, int Hourglass, class L>
     });
     // The rows hold the far ends of the CSR blocks' runs (not of a stencil block's here).
     const bool fromRows = in.rows != nullptr && block.stencil == kNoStencil;
+    // SumsOwn (a std::bool_constant): the run sums wOwn itself (staged afresh), else
+    // CsrPairWeights::ownSum has it.
+    const auto run = [&](auto sumsOwn, const StagedPairs& st, std::size_t begin, Index size,
+                         Index c, Index i) __attribute__((always_inline)) {
+        constexpr bool SumsOwn = decltype(sumsOwn)::value;
+        if (fromRows)
+            gatheredPairs<Viscous, Hourglass, true, SumsOwn, L>(in, st, begin, size, c, i, s);
+        else
+            gatheredPairs<Viscous, Hourglass, false, SumsOwn, L>(in, st, begin, size, c, i, s);
+    };
     for (Index i = 0; i < len; ++i) {
         const Index c = block.particle(i);
         if (afresh[i]) {
             Index size = 0;
             const StagedPairs& st = stageIntoScratch(ref, bonds, c, size);
-            if (fromRows)
-                gatheredPairs<Viscous, Hourglass, true, true, L>(in, st, 0, size, c, i, s);
-            else
-                gatheredPairs<Viscous, Hourglass, false, true, L>(in, st, 0, size, c, i, s);
+            run(std::true_type{}, st, 0, size, c, i);
         } else {
             const CsrPairWeights& w = *in.staged;
             const auto ic = static_cast<std::size_t>(c);
-            const auto size = static_cast<Index>(w.begin[ic + 1] - w.begin[ic]);
-            if (fromRows)
-                gatheredPairs<Viscous, Hourglass, true, false, L>(in, w.pairs, w.begin[ic], size, c,
-                                                                  i, s);
-            else
-                gatheredPairs<Viscous, Hourglass, false, false, L>(in, w.pairs, w.begin[ic], size,
-                                                                   c, i, s);
+            run(std::false_type{}, w.pairs, w.begin[ic],
+                static_cast<Index>(w.begin[ic + 1] - w.begin[ic]), c, i);
         }
     }
     leaveLanes<L>();

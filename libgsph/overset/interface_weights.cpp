@@ -198,7 +198,8 @@ void correctInterfaceWeights(Reference& ref, const InterfaceSolveProgress& progr
     const double tolerance = 1e-14 * rhsNorm;
     const int maxIterations = 20000;
     int it = 0;
-    while (it < maxIterations && residual.norm() > tolerance) {
+    double residualNorm = rhsNorm;
+    while (it < maxIterations && residualNorm > tolerance) {
         A.applyAt(direction, g);
         A.applyA(g, Ad);
         const double dAd = direction.dot(Ad);
@@ -211,7 +212,8 @@ void correctInterfaceWeights(Reference& ref, const InterfaceSolveProgress& progr
         direction = z + (rzNext / rz) * direction;
         rz = rzNext;
         ++it;
-        if (progress) progress(it, residual.norm() / rhsNorm);
+        residualNorm = residual.norm();
+        if (progress) progress(it, residualNorm / rhsNorm);
     }
     // The achieved residual, recomputed from the corrections themselves.
     Eigen::VectorXd correction(A.unknowns()), achieved(rows);

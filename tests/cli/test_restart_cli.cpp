@@ -44,6 +44,13 @@ std::string solve(const fs::path& caseFile, const fs::path& particles, const fs:
            " -o " + quote(runDir.string()) + (extra.empty() ? "" : " " + extra);
 }
 
+// A gsph-solve command line run by script(1) on a pseudo-terminal of `columns` columns.
+test::ProcessResult solveOnTerminal(int columns, const std::string& command) {
+    return runCommand("script -qec " +
+                      quote("stty cols " + std::to_string(columns) + "; " + command) +
+                      " /dev/null");
+}
+
 std::string readText(const fs::path& p) {
     return test::slurp(p);
 }
@@ -458,10 +465,7 @@ TEST_F(Restart, ProgressBarShowsOnATerminal) {
     // script(1) runs the solver on a pseudo-terminal: the bar shows simulated time against the
     // end time, both rates and the ETA (in a pipe it stays quiet: interruptAndRestart).
     const auto onTerminal = [&](int columns, const std::string& name) {
-        return runCommand("script -qec " +
-                          quote("stty cols " + std::to_string(columns) + "; " +
-                                solve(kSampleCase, particles_, dir_ / name)) +
-                          " /dev/null");
+        return solveOnTerminal(columns, solve(kSampleCase, particles_, dir_ / name));
     };
     const auto r = onTerminal(160, "tty");
     ASSERT_EQ(r.status, 0) << r.err;
@@ -499,10 +503,7 @@ TEST_F(Restart, OversetSetUpShowsTheInterfaceWeightsSolveOnATerminal) {
     ASSERT_EQ(made.status, 0) << made.err;
     const fs::path taylor = test::kSourceDir / "cases/taylor_bar/case.toml";
     const auto onTerminal = [&](int columns, const std::string& name) {
-        return runCommand("script -qec " +
-                          quote("stty cols " + std::to_string(columns) + "; " +
-                                solve(taylor, ogrid, dir_ / name, "--end-time 2e-7")) +
-                          " /dev/null");
+        return solveOnTerminal(columns, solve(taylor, ogrid, dir_ / name, "--end-time 2e-7"));
     };
     const auto r = onTerminal(160, "tty");
     ASSERT_EQ(r.status, 0) << r.err;
