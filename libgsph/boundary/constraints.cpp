@@ -27,9 +27,9 @@ void applyConstraints(const std::vector<VelocityConstraint>& constraints, const 
         }
 }
 
-double reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
-                     const State& state, const std::vector<Vec3>& force, ParticleRange owned) {
-    double power = 0.0;
+ExactSum reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
+                       const State& state, const std::vector<Vec3>& force, ParticleRange owned) {
+    ExactSum power;
     const double eps = std::max(state.dt, 1e-12) * 1e-3;
     for (const VelocityConstraint& c : constraints) {
         if (!c.velocity) continue;  // fixed: no power
@@ -41,7 +41,7 @@ double reactionPower(const std::vector<VelocityConstraint>& constraints, const R
             Vec3 reaction = ref.mass[ia] * accel - force[ia];
             for (int r = 0; r < 3; ++r)
                 if (!c.holds[static_cast<std::size_t>(r)]) reaction[r] = 0.0;
-            power += reaction.dot(state.v[ia]);
+            power.add(reaction.dot(state.v[ia]));
         }
     }
     return power;

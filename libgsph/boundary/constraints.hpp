@@ -40,8 +40,9 @@ void applyConstraints(const std::vector<VelocityConstraint>& constraints, const 
 /// Power of the reactions that keep the constrained particles on their prescribed velocity at
 /// state.time: Σ (m a_prescribed − f)·v over the held components, a_prescribed by a central
 /// difference of the prescription, `force` the particles' total force [W]. Fixed sets do no
-/// work. Over the `owned` particles only (this process's share; all of them in a serial run).
-double reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
-                     const State& state, const std::vector<Vec3>& force, ParticleRange owned);
+/// work. Over the `owned` particles only (this process's share; all of them in a serial run),
+/// summed exactly (core/exact_sum.hpp) so that the processes' shares add up to the same bits.
+ExactSum reactionPower(const std::vector<VelocityConstraint>& constraints, const Reference& ref,
+                       const State& state, const std::vector<Vec3>& force, ParticleRange owned);
 
 }  // namespace gsph

@@ -12,8 +12,9 @@ StageReport PairContactStage::addForces(const State& state, ForceChannels& out) 
 }
 
 StageReport WallStage::addForces(const State& state, ForceChannels& out) {
-    const WallResult w = walls_.addForces(state.time, state.dt, state.x, state.v, out.force,
-                                          out.external, out.frequency2, particleForce_, out.owned);
+    const WallResult w =
+        walls_.addForces(state.time, state.dt, state.x, state.v, out.force, out.external,
+                         out.frequency2, particleForce_, out.owned, out.domain);
     StageReport report;
     report.potential = w.energy;
     report.externalPower = w.pushPower;

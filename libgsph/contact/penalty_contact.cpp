@@ -348,8 +348,9 @@ double PenaltyContact::addForces(const std::vector<Vec3>& current, std::vector<V
     for (Index a = owned_.begin; a < owned_.end; ++a)
         counted += pairCount_[static_cast<std::size_t>(a)];
     pairs_ = counted / 2;
-    return deterministicSum(
-        owned_, 0.0, [&](Index a) { return energy_[static_cast<std::size_t>(a)]; }, partial_);
+    const ExactSum energy =
+        exactSum(owned_, [&](Index a) { return energy_[static_cast<std::size_t>(a)]; });
+    return domain_ ? domain_->total(energy) : energy.value();
 }
 
 void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
@@ -359,15 +360,22 @@ void PenaltyContact::bodyPairForces(std::vector<Vec3>& out) const {
     }
     const std::size_t bodies = ranges_.size();
     out.assign(bodies * bodies, Vec3::Zero());
+    std::vector<ExactSum>& sums = bodyPairScratch_;
+    sums.assign(3 * bodies * bodies, ExactSum{});
     for (std::size_t i = 0; i < bodies; ++i) {
         const ParticleRange mine = owned_.within(ranges_[i].first, ranges_[i].second);
         for (Index a = mine.begin; a < mine.end; ++a) {
             const auto ia = static_cast<std::size_t>(a);
             if (!candidate_[ia]) continue;
             for (std::size_t j = 0; j < bodies; ++j)
-                out[i * bodies + j] += forceByBody_[ia * bodies + j];
+                for (std::size_t r = 0; r < 3; ++r)
+                    sums[3 * (i * bodies + j) + r].add(
+                        forceByBody_[ia * bodies + j][static_cast<Index>(r)]);
         }
     }
+    if (domain_) domain_->sum(sums);
+    for (std::size_t k = 0; k < bodies * bodies; ++k)
+        for (std::size_t r = 0; r < 3; ++r) out[k][static_cast<Index>(r)] = sums[3 * k + r].value();
 }
 
 }  // namespace gsph

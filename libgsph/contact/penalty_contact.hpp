@@ -84,7 +84,8 @@ class PenaltyContact {
     }
 
     /// Adds the contact force of every pair to force[a], adds Σ_b k_ab |∂gap/∂x_a|² (1/m_a +
-    /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J].
+    /// 1/√(m_a m_b)) (Gershgorin bound of the squared frequency) to frequency2[a]; returns U [J],
+    /// exactly rounded over every process of a split run (collective).
     /// `bondIntact` (State::bondIntact, per CSR pair; empty: no bond broken) decides the pairs
     /// of self-contact, `separation` (State::contactSeparation; empty: none measured) caps
     /// their contact distance.
@@ -106,9 +107,10 @@ class PenaltyContact {
     std::size_t bodies() const { return ranges_.size(); }
     /// Per ordered pair of bodies (i, j) (bodies in particle order), the force that j's
     /// particles exert on i's at the last addForces [N], into out[i·B + j] (B = bodies();
-    /// out[i·B + i] = 0). Summed particle by particle in index order: independent of the thread
-    /// count, and out[i·B + j] = −out[j·B + i] to round-off (LS-DYNA's rcforc). Self-contact
-    /// forces are internal to a body and not in it; empty unless contact between bodies is on.
+    /// out[i·B + i] = 0). Exactly rounded sums over the particles of restrictTo and its domain's
+    /// processes (collective): independent of the thread and process count, and out[i·B + j] =
+    /// −out[j·B + i] to round-off (LS-DYNA's rcforc). Self-contact forces are internal to a body
+    /// and not in it; empty unless contact between bodies is on.
     void bodyPairForces(std::vector<Vec3>& out) const;
 
   private:
@@ -143,7 +145,7 @@ class PenaltyContact {
     std::vector<std::int32_t> pairCount_;         ///< per particle: its pairs in contact
     /// Per candidate particle a and body j: the force of j's particles on a (a·B + j) [N].
     std::vector<Vec3> forceByBody_;
-    std::vector<double> partial_;  ///< scratch of deterministicSum
+    mutable std::vector<ExactSum> bodyPairScratch_;  ///< of bodyPairForces
     long pairs_ = 0;
     ParticleRange owned_;
     Domain* domain_ = nullptr;

@@ -2,6 +2,7 @@
 #include "contact/walls.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -54,12 +55,14 @@ RigidWalls::RigidWalls(const Reference& ref, std::vector<Wall> walls, std::vecto
 WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x,
                                  const std::vector<Vec3>& v, std::vector<Vec3>& force,
                                  std::vector<Vec3>& friction, std::vector<double>& frequency2,
-                                 std::vector<Vec3>& wallForce, ParticleRange owned) {
+                                 std::vector<Vec3>& wallForce, ParticleRange owned,
+                                 Domain* domain) {
     WallResult result;
     if (walls_.empty()) return result;
     const Reference& ref = *ref_;
     const std::size_t walls = walls_.size();
     owned_ = owned;
+    domain_ = domain;
     parallelFor(owned, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);
         Vec3 total = Vec3::Zero(), tangential = Vec3::Zero();
@@ -118,11 +121,12 @@ WallResult RigidWalls::addForces(double t, double dt, const std::vector<Vec3>& x
         pushPower_[ia] = push;
     });
     const auto sum = [&](const std::vector<double>& part) {
-        return deterministicSum(
-            owned, 0.0, [&](Index a) { return part[static_cast<std::size_t>(a)]; }, partial_);
+        return exactSum(owned, [&](Index a) { return part[static_cast<std::size_t>(a)]; });
     };
-    result.energy = sum(energy_);
-    result.pushPower = sum(pushPower_);
+    std::array<ExactSum, 2> sums = {sum(energy_), sum(pushPower_)};
+    if (domain) domain->sum(sums);
+    result.energy = sums[0].value();
+    result.pushPower = sums[1].value();
     return result;
 }
 
@@ -130,11 +134,16 @@ void RigidWalls::totalForces(std::vector<Vec3>& totals) const {
     const std::size_t walls = walls_.size();
     totals.assign(walls, Vec3::Zero());
     if (walls == 0 || perWall_.empty()) return;
+    totalsScratch_.assign(3 * walls, ExactSum{});
     for (std::size_t iw = 0; iw < walls; ++iw)
-        totals[iw] = deterministicSum(
-            owned_, Vec3(Vec3::Zero()),
-            [&](Index a) -> Vec3 { return perWall_[static_cast<std::size_t>(a) * walls + iw]; },
-            partialForce_);
+        for (std::size_t r = 0; r < 3; ++r)
+            totalsScratch_[3 * iw + r] = exactSum(owned_, [&](Index a) {
+                return perWall_[static_cast<std::size_t>(a) * walls + iw][static_cast<Index>(r)];
+            });
+    if (domain_) domain_->sum(totalsScratch_);
+    for (std::size_t iw = 0; iw < walls; ++iw)
+        for (std::size_t r = 0; r < 3; ++r)
+            totals[iw][static_cast<Index>(r)] = totalsScratch_[3 * iw + r].value();
 }
 
 }  // namespace gsph

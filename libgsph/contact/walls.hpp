@@ -23,8 +23,10 @@
 #include <vector>
 
 #include "contact/penalty_contact.hpp"
+#include "core/exact_sum.hpp"
 #include "core/parallel.hpp"
 #include "core/types.hpp"
+#include "distributed/domain.hpp"
 #include "particles/reference.hpp"
 
 namespace gsph {
@@ -59,7 +61,7 @@ struct Wall {
     }
 };
 
-/// What the walls did at the last evaluation, in total.
+/// What the walls did at the last evaluation, in total (over every process of a split run).
 struct WallResult {
     double energy = 0.0;     ///< Σ ½ k g² [J]
     double pushPower = 0.0;  ///< Σ f_n·v_wall [W] (friction's power needs v, the caller's)
@@ -79,16 +81,19 @@ class RigidWalls {
     /// Adds the walls' forces at time t (positions x, velocities v, step dt for the stick
     /// limit; dt ≤ 0: no limit) to force[a], the friction part also to friction[a], k_a for
     /// each wall touched to frequency2[a]; wallForce[a] = the walls' total force on a; for the
-    /// `owned` particles (all of them in a serial run), and their sums only.
+    /// `owned` particles (all of them in a serial run). The sums are exact over the owned
+    /// particles and, with a `domain` (a split run; collective), over every process's.
     WallResult addForces(double t, double dt, const std::vector<Vec3>& x,
                          const std::vector<Vec3>& v, std::vector<Vec3>& force,
                          std::vector<Vec3>& friction, std::vector<double>& frequency2,
-                         std::vector<Vec3>& wallForce, ParticleRange owned);
+                         std::vector<Vec3>& wallForce, ParticleRange owned,
+                         Domain* domain = nullptr);
 
     /// Per wall, the total force (normal and friction) it exerted on the bodies at the last
-    /// addForces [N] (zero before the first), on its owned particles; the reaction on the wall is
-    /// its opposite. Summed
-    /// in a fixed order (bit-identical for any thread count); `totals` is resized to the walls.
+    /// addForces [N] (zero before the first); the reaction on the wall is its opposite. Exactly
+    /// rounded sums over the particles of that addForces and its domain's processes
+    /// (collective): the same bits for any thread or process count. `totals` is resized to the
+    /// walls.
     void totalForces(std::vector<Vec3>& totals) const;
 
   private:
@@ -98,9 +103,10 @@ class RigidWalls {
     std::vector<double> radius_;  ///< planes: ρ_a(n_w), particle-major: radius_[a · walls + w]
     std::vector<Mat3> S_;         ///< the ellipsoids' S_a (kept only when a cylinder needs them)
     std::vector<Vec3> perWall_;   ///< force of wall w on a: perWall_[a · walls + w]
-    std::vector<double> energy_, pushPower_, partial_;  ///< per particle scratch
-    mutable std::vector<Vec3> partialForce_;            ///< scratch of totalForces
-    ParticleRange owned_;                               ///< of the last addForces
+    std::vector<double> energy_, pushPower_;       ///< per particle scratch
+    mutable std::vector<ExactSum> totalsScratch_;  ///< of totalForces: 3 per wall
+    ParticleRange owned_;                          ///< of the last addForces
+    Domain* domain_ = nullptr;                     ///< of the last addForces
 };
 
 }  // namespace gsph

@@ -6,6 +6,8 @@
 // - deterministicSum(n, term): Σ term(i) summed in fixed chunks and a fixed order, so the
 //   result is bit-identical for any thread count (an OpenMP reduction would not be). The
 //   overload with a `partial` scratch vector does not allocate once that has grown.
+// - exactSum(range, term): Σ term(a) exactly rounded, the same bits however the particles are
+//   split over threads or processes (what a split run's reductions use).
 // - ParticleRange: the particles this process advances (all of them in a serial run; one
 //   rank's share in a distributed one, distributed/domain.hpp); the loops above take it too.
 #pragma once
@@ -17,6 +19,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/exact_sum.hpp"
 #include "core/types.hpp"
 
 namespace gsph {
@@ -108,6 +111,22 @@ inline T deterministicSum(ParticleRange range, T zero, Term&& term, std::vector<
     return deterministicSum(
         range.size(), zero,
         [&](std::ptrdiff_t i) { return term(range.begin + static_cast<Index>(i)); }, partial);
+}
+
+/// Σ term(a) over the particles of `range`, exactly rounded (core/exact_sum.hpp): the same bits
+/// for any thread count and any split of the particles over processes (sum the ExactSums).
+template <class Term>
+inline ExactSum exactSum(ParticleRange range, Term&& term) {
+    ExactSum total;
+#pragma omp parallel if (range.size() >= kParallelThreshold)
+    {
+        ExactSum mine;
+#pragma omp for schedule(static) nowait
+        for (Index a = range.begin; a < range.end; ++a) mine.add(term(a));
+#pragma omp critical(gsph_exact_sum)
+        total.add(mine);  // integers: the order of the merges does not matter
+    }
+    return total;
 }
 
 /// Minimum of term(i) over [0, n); exact, so independent of the thread count.

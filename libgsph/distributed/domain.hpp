@@ -15,10 +15,11 @@
 // searches the particles within reach of the contact zone in the current configuration: each
 // process lists its own, and shareListed brings it the others' within reach. A nonlocal damage
 // averages its driver over a material length, beyond the pairs: the driver has a halo of its
-// own (addHalo), exchanged before the average. The global minimum of Δt is exact; the sums of
-// the energy ledger add the processes' partial sums, so they depend on the split at round-off
-// (the state does not read them). gather gives process 0 every particle's state for the files
-// it writes.
+// own (addHalo), exchanged before the average. The global minimum of Δt is exact; so are the
+// sums of the energy ledger and the contact and wall totals: each process sums its particles'
+// terms exactly (core/exact_sum.hpp), the processes add those integers, and the total is rounded
+// once, so they do not depend on the split. gather gives process 0 every particle's state for the
+// files it writes.
 //
 // This base class is the serial run: one process owning every particle, nothing to exchange.
 #pragma once
@@ -29,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "core/exact_sum.hpp"
 #include "core/parallel.hpp"
 #include "distributed/halo_plan.hpp"
 #include "neighbors/stencil_blocks.hpp"
@@ -109,8 +111,15 @@ class Domain {
     virtual double minimum(double local) { return local; }
     /// Each value's minimum over the processes (exact).
     virtual void minimum(std::span<double> values) { (void)values; }
-    /// Each value summed over the processes.
+    /// Each value summed over the processes, in process order (for counts: exact below 2^53).
     virtual void sum(std::span<double> values) { (void)values; }
+    /// Each exact sum summed over the processes (exact: the same for any process count).
+    virtual void sum(std::span<ExactSum> values) { (void)values; }
+    /// The exact sum over the processes of each one's `partial`, rounded once.
+    double total(ExactSum partial) {
+        sum(std::span<ExactSum>(&partial, 1));
+        return partial.value();
+    }
     /// True when it is true on some process.
     virtual bool any(bool local) { return local; }
     /// Process 0's state gets every process's particles (per-particle arrays, and the per-pair

@@ -215,6 +215,21 @@ class MpiDomain final : public Domain {
         }
     }
 
+    void sum(std::span<ExactSum> values) override {
+        const std::size_t words = ExactSum::kWords;
+        exactWords_.resize(values.size() * words);
+        for (std::size_t k = 0; k < values.size(); ++k)
+            values[k].toWords(
+                std::span<std::int64_t, ExactSum::kWords>(&exactWords_[k * words], words));
+        // Integers: their sum is exact, whatever order MPI adds them in.
+        check(MPI_Allreduce(MPI_IN_PLACE, exactWords_.data(), static_cast<int>(exactWords_.size()),
+                            MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD),
+              "MPI_Allreduce");
+        for (std::size_t k = 0; k < values.size(); ++k)
+            values[k].fromWords(
+                std::span<const std::int64_t, ExactSum::kWords>(&exactWords_[k * words], words));
+    }
+
     bool any(bool local) override {
         int mine = local ? 1 : 0, some = 0;
         check(MPI_Allreduce(&mine, &some, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD), "MPI_Allreduce");
@@ -361,6 +376,7 @@ class MpiDomain final : public Domain {
     std::vector<std::vector<std::uint8_t>> outgoing_, incoming_;
     std::vector<MPI_Request> requests_;
     std::vector<double> partials_;
+    std::vector<std::int64_t> exactWords_;  ///< scratch of the exact sums
 };
 
 }  // namespace

@@ -351,9 +351,9 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state, ParticleRange owned, D
         released_[ia] = 0.5 * state.dt * (released_[ia] - internalPower(state, a));
     });
     markStale(owned);
-    result.releasedEnergy = deterministicSum(
-        owned, 0.0, [&](Index a) { return released_[static_cast<std::size_t>(a)]; }, partialSums_);
-    if (split) domain.sum({&result.releasedEnergy, 1});
+    const ExactSum released =
+        exactSum(owned, [&](Index a) { return released_[static_cast<std::size_t>(a)]; });
+    result.releasedEnergy = split ? domain.total(released) : released.value();
     return result;
 }
 

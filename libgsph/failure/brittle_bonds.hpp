@@ -209,7 +209,6 @@ class BrittleBonds {
     std::vector<std::uint8_t> stale_;       ///< per particle: BondView::stale
     std::vector<Index> changed_;            ///< per particle: bonds broken by the current call
     std::vector<double> released_;          ///< per particle: its share of the released energy
-    std::vector<double> partialSums_;       ///< scratch of deterministicSum
     std::vector<double> intactDetB_;        ///< |det B| with every bond, per particle
     std::vector<double> stepFactor_;        ///< per particle, see stepFactor
     std::vector<std::uint8_t> failedSeen_;  ///< Cut: failed at the last call (D ≥ 1)

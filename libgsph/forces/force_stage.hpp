@@ -51,7 +51,9 @@ struct StageNeeds {
     bool viscous = false, hourglass = false, cohesive = false, external = false, frequency2 = false;
 };
 
-/// What a stage reports of one force evaluation besides its forces.
+/// What a stage reports of one force evaluation besides its forces: totals over every process of
+/// a split run (a stage sums its own particles' exactly and its ForceChannels::domain adds the
+/// processes', so they do not depend on the split).
 struct StageReport {
     double potential = 0.0;  ///< energy stored in its springs at x_{n+1} (contact energy) [J]
     /// Power it puts into the bodies that Σ external·v does not hold (a moving wall's push) [W].

@@ -22,12 +22,12 @@ struct LedgerPowers {
     double viscous = 0.0, hourglass = 0.0, boundary = 0.0, external = 0.0, cohesive = 0.0;  ///< [W]
 };
 
-/// The powers at the state's time and velocities, over channels.owned (this process's share of
-/// each; `stagePower` is its share too). `stagePower`: Σ of the stages' reported
-/// externalPower at the last force evaluation. Deterministic (fixed summation order).
+/// The powers at the state's time and velocities: each process sums its own particles'
+/// (channels.owned) exactly and channels.domain adds the processes' sums, so every power is
+/// rounded once and is the same for any thread or process count. `stagePower`: Σ of the stages'
+/// reported externalPower at the last force evaluation (their totals over every process).
 LedgerPowers measurePowers(const Reference& ref, const State& state, const ForceChannels& channels,
-                           double stagePower, const std::vector<VelocityConstraint>& constraints,
-                           std::vector<double>& partialSums);
+                           double stagePower, const std::vector<VelocityConstraint>& constraints);
 
 /// Stores the powers at the run's start (the first trapezoid's left end).
 void startLedger(EnergyLedger& ledger, const LedgerPowers& powers);

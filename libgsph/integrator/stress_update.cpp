@@ -637,23 +637,23 @@ void StressUpdate::throwOnFailure(const State& state) const {
 }
 
 void StressUpdate::bookDissipation(State& state, ParticleRange owned, Domain& domain) {
-    // Per body (and the fracture energy last), this process's share, summed over the processes
-    // and then booked in body order: one process books exactly as the serial run did.
-    dissipated_.assign(bodies_.size() + 1, 0.0);
+    // Per body (and the fracture energy last), this process's share summed exactly, the shares
+    // summed over the processes, and then booked in body order: the same bits on any number.
+    dissipated_.assign(bodies_.size() + 1, ExactSum{});
     if (bonds_.enabled())
-        dissipated_.back() = deterministicSum(
-            owned, 0.0, [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; },
-            partialSums_);
+        dissipated_.back() =
+            exactSum(owned, [&](Index a) { return fractureEnergy_[static_cast<std::size_t>(a)]; });
     for (std::size_t b = 0; b < bodies_.size(); ++b) {
         if (!tracksHistory(*bodies_[b].material)) continue;
-        dissipated_[b] = deterministicSum(
-            owned.within(bodies_[b].begin, bodies_[b].end), 0.0,
-            [&](Index a) { return damageDissipation_[static_cast<std::size_t>(a)]; }, partialSums_);
+        dissipated_[b] = exactSum(owned.within(bodies_[b].begin, bodies_[b].end), [&](Index a) {
+            return damageDissipation_[static_cast<std::size_t>(a)];
+        });
     }
     if (domain.processes() > 1) domain.sum(dissipated_);
-    if (bonds_.enabled()) state.ledger.fractureEnergy += dissipated_.back();
+    if (bonds_.enabled()) state.ledger.fractureEnergy += dissipated_.back().value();
     for (std::size_t b = 0; b < bodies_.size(); ++b)
-        if (tracksHistory(*bodies_[b].material)) state.ledger.damageDissipation += dissipated_[b];
+        if (tracksHistory(*bodies_[b].material))
+            state.ledger.damageDissipation += dissipated_[b].value();
 }
 
 Reads StressUpdate::driverReads() const {

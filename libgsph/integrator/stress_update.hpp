@@ -103,8 +103,7 @@ class StressUpdate {
     /// Per particle, the elastic energy released when it was detached [J] (sized only when
     /// bonds can break; written by the detaching step alone, zero before and after it).
     std::vector<double> fractureEnergy_;
-    std::vector<double> partialSums_;  ///< scratch of deterministicSum
-    std::vector<double> dissipated_;   ///< scratch of bookDissipation: per body, then fracture
+    std::vector<ExactSum> dissipated_;  ///< scratch of bookDissipation: per body, then fracture
     /// Per body, the nonlocal average of its damage driver (empty for local damage), and per
     /// particle the averages of this step (sized only when a body's damage is nonlocal).
     std::vector<NonlocalAverage> nonlocal_;

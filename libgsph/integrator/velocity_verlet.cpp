@@ -164,13 +164,7 @@ void VelocityVerlet::shareGhosts(State& state, GhostColumns which) {
 }
 
 LedgerPowers VelocityVerlet::powersNow(const State& state) {
-    LedgerPowers p = measurePowers(ref_, state, channels_, stagePower_, constraints_, partialSums_);
-    if (domain_->processes() > 1) {
-        std::array<double, 5> v = {p.viscous, p.hourglass, p.boundary, p.external, p.cohesive};
-        domain_->sum(v);
-        p = {v[0], v[1], v[2], v[3], v[4]};
-    }
-    return p;
+    return measurePowers(ref_, state, channels_, stagePower_, constraints_);
 }
 
 // Step 5: every stage adds its forces at x_{n+1}, t_{n+1} (v_{n+½}) in order; then a = f/m.
@@ -186,17 +180,8 @@ void VelocityVerlet::computeAccelerations(State& state) {
         stagePower_ += report.externalPower;
         (k == 0 ? times_.forces : times_.contact) += omp_get_wtime() - t0;
     }
+    // The stages' reports and totals are over every process already (exactly rounded sums).
     for (const auto& stage : stages_) stage->record(state);
-    if (domain_->processes() > 1) {
-        std::array<double, 2> sums = {potential, stagePower_};
-        domain_->sum(sums);
-        potential = sums[0];
-        stagePower_ = sums[1];
-        // The walls' and the contact's totals (history rows, checkpoint): this process's share
-        // until summed.
-        for (std::vector<Vec3>* totals : {&state.wallForce, &state.contactForce})
-            if (!totals->empty()) domain_->sum({totals->front().data(), 3 * totals->size()});
-    }
     state.ledger.contactEnergy = potential;
     parallelFor(owned_, [&](Index a) {
         const auto ia = static_cast<std::size_t>(a);

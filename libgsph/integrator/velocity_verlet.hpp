@@ -154,7 +154,6 @@ class VelocityVerlet {
     std::vector<std::shared_ptr<ForceStage>> stages_;
     ForceChannels channels_;
     double stagePower_ = 0.0;  ///< Σ of the stages' external power at the last evaluation [W]
-    std::vector<double> partialSums_;
     PhaseTimes times_;
     std::shared_ptr<Domain> domain_ = std::make_shared<Domain>();
     ParticleRange owned_;

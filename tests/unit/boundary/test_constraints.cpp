@@ -32,7 +32,7 @@ TEST(Constraints, HoldsOnlyItsComponents) {
     std::vector<Vec3> force(4, Vec3::Zero());
     force[3] = Vec3(1.0, 7.0, 2.0);
     const double m = ref.mass[3];
-    EXPECT_NEAR(reactionPower({roller, driven}, ref, state, force, {0, ref.size()}),
+    EXPECT_NEAR(reactionPower({roller, driven}, ref, state, force, {0, ref.size()}).value(),
                 (m * 10.0 - 1.0) * 5.0 + (0.0 - 2.0) * 6.0, 1e-9 * m * 50.0);
 }
 

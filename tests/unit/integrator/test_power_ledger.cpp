@@ -42,8 +42,7 @@ TEST(PowerLedger, PowersFromTheChannelsAndTheReactions) {
     // Particle 1 is driven at v = (0, t, 0): a = (0, 1, 0), its reaction is m a − f.
     const std::vector<VelocityConstraint> driven = {
         {"driven", {1}, [](double t, const Vec3&) { return Vec3(0.0, t, 0.0); }}};
-    std::vector<double> scratch;
-    const LedgerPowers p = measurePowers(ref, s, c, 0.25, driven, scratch);
+    const LedgerPowers p = measurePowers(ref, s, c, 0.25, driven);
     EXPECT_EQ(p.viscous, -1.0 * 1.0 + -0.5 * 2.0);
     EXPECT_EQ(p.hourglass, 0.0) << "no stage wrote the channel";
     EXPECT_EQ(p.cohesive, 0.0) << "no stage wrote the channel";
