@@ -29,6 +29,7 @@ class ExactSum {
 
     void add(double x) {
         const std::uint64_t bits = bitsOf(x);
+        if ((bits << 1) == 0) return;  // ±0: common (particles off a wall), adds nothing
         const auto biased = static_cast<unsigned>((bits >> 52) & 0x7ffU);
         if (biased == 0x7ffU) return addSpecial(bits);
         std::uint64_t mantissa = bits & ((std::uint64_t{1} << 52) - 1);
