@@ -22,6 +22,10 @@ void check(int status, const char* call) {
     if (status != MPI_SUCCESS) throw Error(std::string("MPI: ") + call + " failed");
 }
 
+// The gather's messages: a tag apart from the exchanges' (GhostColumns), and at most 1 GiB each.
+constexpr int kGatherTag = 64;
+constexpr std::size_t kMessageBytes = std::size_t{1} << 30;
+
 class MpiDomain final : public Domain {
   public:
     MpiDomain() {
@@ -241,44 +245,32 @@ class MpiDomain final : public Domain {
             if (array.empty()) return;
             if (field.extent != Extent::Particle && field.extent != Extent::Pair) return;
             using T = typename std::decay_t<decltype(array)>::value_type;
-            std::vector<int> counts, offsets;
-            byteRanges(field.extent == Extent::Particle ? cuts_ : pairCuts_, sizeof(T), counts,
-                       offsets);
+            const std::vector<Index>& cuts = field.extent == Extent::Particle ? cuts_ : pairCuts_;
             auto* data = reinterpret_cast<std::uint8_t*>(array.data());
-            const auto me = static_cast<std::size_t>(rank_);
-            if (rank_ == 0)
-                check(MPI_Gatherv(MPI_IN_PLACE, 0, MPI_BYTE, data, counts.data(), offsets.data(),
-                                  MPI_BYTE, 0, MPI_COMM_WORLD),
-                      "MPI_Gatherv");
-            else
-                check(MPI_Gatherv(data + offsets[me], counts[me], MPI_BYTE, nullptr, nullptr,
-                                  nullptr, MPI_BYTE, 0, MPI_COMM_WORLD),
-                      "MPI_Gatherv");
+            // Process by process into process 0's array, in messages of at most kMessageBytes
+            // (MPI counts are ints): an array of any size.
+            for (int r = 1; r < size_; ++r) {
+                if (rank_ != 0 && rank_ != r) continue;
+                const auto rr = static_cast<std::size_t>(r);
+                const std::size_t begin = static_cast<std::size_t>(cuts[rr]) * sizeof(T);
+                const std::size_t end = static_cast<std::size_t>(cuts[rr + 1]) * sizeof(T);
+                for (std::size_t at = begin; at < end; at += kMessageBytes) {
+                    const auto n = static_cast<int>(std::min(kMessageBytes, end - at));
+                    if (rank_ == r)
+                        check(MPI_Send(data + at, n, MPI_BYTE, 0, kGatherTag, MPI_COMM_WORLD),
+                              "MPI_Send");
+                    else
+                        check(MPI_Recv(data + at, n, MPI_BYTE, r, kGatherTag, MPI_COMM_WORLD,
+                                       MPI_STATUS_IGNORE),
+                              "MPI_Recv");
+                }
+            }
         });
     }
 
     std::string describe() const override { return description_; }
 
   private:
-    // Each process's range in bytes of an array of `size`-byte entries, the processes' ranges
-    // of entries cut at `cuts` (MPI counts are ints).
-    static void byteRanges(const std::vector<Index>& cuts, std::size_t size,
-                           std::vector<int>& counts, std::vector<int>& offsets) {
-        counts.resize(cuts.size() - 1);
-        offsets.resize(counts.size());
-        if (static_cast<std::size_t>(cuts.back()) * size >
-            static_cast<std::size_t>(std::numeric_limits<int>::max()))
-            throw InputError(
-                "a split run gathers whole state arrays on one process, at most 2 GB "
-                "each: " +
-                std::to_string(cuts.back()) + " entries of " + std::to_string(size) +
-                " bytes are too many");
-        for (std::size_t r = 0; r < counts.size(); ++r) {
-            counts[r] = static_cast<int>(static_cast<std::size_t>(cuts[r + 1] - cuts[r]) * size);
-            offsets[r] = static_cast<int>(static_cast<std::size_t>(cuts[r]) * size);
-        }
-    }
-
     // One message to and from every peer, all at once: `bytes(p, sending)` their sizes,
     // `pack(p, out)` fills the one to peer p, `unpack(p, in)` reads the one from it.
     template <class Bytes, class Pack, class Unpack>
