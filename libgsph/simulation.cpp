@@ -94,6 +94,12 @@ void Simulation::setDomain(std::shared_ptr<Domain> domain) {
     domain_ = std::move(domain);
 }
 
+EnergyReport Simulation::energy() const {
+    if (!integrator_ || !domain_ || domain_->processes() == 1)
+        return measureEnergy(ref_, state_, bodies_);
+    return measureEnergy(ref_, state_, bodies_, integrator_->owned(), domain_.get());
+}
+
 void Simulation::gatherState() {
     if (domain_ && domain_->processes() > 1) domain_->gather(state_);
 }

@@ -79,7 +79,9 @@ class Simulation {
     const std::vector<BodyRange>& bodies() const { return bodies_; }
     const VelocityVerlet& integrator() const { return *integrator_; }
     const SolverOptions& options() const { return options_; }
-    EnergyReport energy() const { return measureEnergy(ref_, state_, bodies_); }
+    /// The energies and momentum (integrator/energy.hpp); in a split run over every process's
+    /// particles (collective: every process calls it at the same point).
+    EnergyReport energy() const;
     /// Per wall (in the order added), its force on the bodies at the last force evaluation
     /// [N] (State::wallForce, so a resumed run reports what the straight run did); empty
     /// without walls or before start().

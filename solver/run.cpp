@@ -393,7 +393,8 @@ class RunOutputs {
   private:
     /// A row of history.csv and of probes.csv.
     void addRow(const Simulation& sim) {
-        gather();
+        // The energies are summed over the processes; the probes read particles anywhere.
+        if (!probes_.empty()) gather();
         history_.add(sim.state(), sim.energy(), sim.wallForces(), sim.contactForces());
         if (!probes_.empty()) probes_.add(ref_, sim.state());
     }
@@ -726,7 +727,7 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                                 summary.steps) +
                          summary.checkpoint.string());
     } else {
-        out.gather();  // the energies below read every particle
+        out.gather();  // the count of failed particles below reads every particle
         logEnd(*options.log, summary, sim.integrator().phaseTimes(), sim.energy());
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();

@@ -15,12 +15,4 @@ struct BodyRange {
     const Material* material = nullptr;
 };
 
-/// Σ over the body's particles of term(a), a the particle index, in deterministicSum's fixed
-/// order; `partial` is its scratch.
-template <class T, class Term>
-T sumOverBody(const BodyRange& body, T zero, Term&& term, std::vector<T>& partial) {
-    return deterministicSum(ParticleRange{body.begin, body.end}, zero, std::forward<Term>(term),
-                            partial);
-}
-
 }  // namespace gsph

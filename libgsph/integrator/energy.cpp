@@ -4,66 +4,69 @@
 #include <Eigen/LU>
 #include <type_traits>
 
+#include "core/exact_sum.hpp"
 #include "core/parallel.hpp"
 
 namespace gsph {
 namespace {
 
-BodyEnergy measureBody(const Reference& ref, const State& state, const BodyRange& body,
-                       std::vector<double>& partial, std::vector<Vec3>& partialVec) {
-    BodyEnergy e;
-    e.kinetic = sumOverBody(
-        body, 0.0,
-        [&](Index a) {
-            const auto ia = static_cast<std::size_t>(a);
-            return 0.5 * ref.mass[ia] * state.v[ia].squaredNorm();
-        },
-        partial);
-    e.momentum = sumOverBody(
-        body, Vec3(Vec3::Zero()),
-        [&](Index a) {
-            const auto ia = static_cast<std::size_t>(a);
-            return Vec3(ref.mass[ia] * state.v[ia]);
-        },
-        partialVec);
-    e.elastic = std::visit(
+// A body's sums over its particles in `owned`: kinetic, elastic, plastic work, momentum x, y, z.
+constexpr std::size_t kBodySums = 6;
+
+void sumBody(const Reference& ref, const State& state, const BodyRange& body, ParticleRange owned,
+             ExactSum* sums) {
+    const ParticleRange mine = owned.within(body.begin, body.end);
+    const auto mass = [&](Index a) { return ref.mass[static_cast<std::size_t>(a)]; };
+    const auto v = [&](Index a) -> const Vec3& { return state.v[static_cast<std::size_t>(a)]; };
+    sums[0] = exactSum(mine, [&](Index a) { return 0.5 * mass(a) * v(a).squaredNorm(); });
+    sums[1] = std::visit(
         [&](const auto& model) {
             using Model = std::decay_t<decltype(model)>;
-            return sumOverBody(
-                body, 0.0,
-                [&](Index a) {
-                    const auto ia = static_cast<std::size_t>(a);
-                    const double J = state.F[ia].determinant();
-                    MaterialPoint point;
-                    point.cauchy = state.cauchy[ia];
-                    point.density = model.elastic().density / J;
-                    if constexpr (kHasHistory<Model>) loadHistory<Model>(state, ia, point);
-                    return ref.quadVolume[ia] * J * model.storedEnergyDensity(point);
-                },
-                partial);
+            return exactSum(mine, [&](Index a) {
+                const auto ia = static_cast<std::size_t>(a);
+                const double J = state.F[ia].determinant();
+                MaterialPoint point;
+                point.cauchy = state.cauchy[ia];
+                point.density = model.elastic().density / J;
+                if constexpr (kHasHistory<Model>) loadHistory<Model>(state, ia, point);
+                return ref.quadVolume[ia] * J * model.storedEnergyDensity(point);
+            });
         },
         *body.material);
-    e.plasticWork = sumOverBody(
-        body, 0.0, [&](Index a) { return state.plasticWork[static_cast<std::size_t>(a)]; },
-        partial);
-    return e;
+    sums[2] =
+        exactSum(mine, [&](Index a) { return state.plasticWork[static_cast<std::size_t>(a)]; });
+    for (int d = 0; d < 3; ++d)
+        sums[3 + static_cast<std::size_t>(d)] =
+            exactSum(mine, [&](Index a) { return mass(a) * v(a)[d]; });
 }
 
 }  // namespace
 
 EnergyReport measureEnergy(const Reference& ref, const State& state,
                            const std::vector<BodyRange>& bodies) {
+    return measureEnergy(ref, state, bodies, ParticleRange{0, ref.size()}, nullptr);
+}
+
+EnergyReport measureEnergy(const Reference& ref, const State& state,
+                           const std::vector<BodyRange>& bodies, ParticleRange owned,
+                           Domain* domain) {
+    std::vector<ExactSum> sums(kBodySums * bodies.size());
+    for (std::size_t b = 0; b < bodies.size(); ++b)
+        sumBody(ref, state, bodies[b], owned, &sums[kBodySums * b]);
+    if (domain) domain->sum(sums);
     EnergyReport e;
-    std::vector<double> partial;
-    std::vector<Vec3> partialVec;
     e.bodies.reserve(bodies.size());
-    for (const BodyRange& body : bodies) {
-        const BodyEnergy& b =
-            e.bodies.emplace_back(measureBody(ref, state, body, partial, partialVec));
-        e.kinetic += b.kinetic;
-        e.elastic += b.elastic;
-        e.plasticWork += b.plasticWork;
-        e.momentum += b.momentum;
+    for (std::size_t b = 0; b < bodies.size(); ++b) {
+        const ExactSum* s = &sums[kBodySums * b];
+        const BodyEnergy& body = e.bodies.emplace_back(
+            BodyEnergy{.kinetic = s[0].value(),
+                       .elastic = s[1].value(),
+                       .plasticWork = s[2].value(),
+                       .momentum = Vec3(s[3].value(), s[4].value(), s[5].value())});
+        e.kinetic += body.kinetic;
+        e.elastic += body.elastic;
+        e.plasticWork += body.plasticWork;
+        e.momentum += body.momentum;
     }
     e.viscousWork = state.ledger.viscousWork;
     e.hourglassWork = state.ledger.hourglassWork;

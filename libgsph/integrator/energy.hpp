@@ -6,8 +6,11 @@
 //   integrator); the contact springs' potential. Balance:
 //   kinetic + elastic + viscous + hourglass + plastic + damage + fracture + cohesive + contact
 //   − boundary − external = const.
-// Kinetic, elastic and plastic energy and momentum are summed body by body, and the run's are
-// the sums of the bodies' in body order: the bodies' shares add up to the run's exactly.
+// Kinetic, elastic and plastic energy and momentum are summed body by body, each an exactly
+// rounded sum (core/exact_sum.hpp) over the particles and, in a split run, over the processes
+// (each its own particles: no gather), so they do not depend on the thread or process count;
+// the run's are the sums of the bodies' in body order: the bodies' shares add up to the run's
+// exactly.
 #pragma once
 
 #include <vector>
@@ -47,8 +50,12 @@ struct EnergyReport {
     }
 };
 
-/// Deterministic (thread-count-independent) sums over every body.
+/// Over every body and every particle.
 EnergyReport measureEnergy(const Reference& ref, const State& state,
                            const std::vector<BodyRange>& bodies);
+/// Over the `owned` particles and, with a `domain` (a split run; collective), every process's.
+EnergyReport measureEnergy(const Reference& ref, const State& state,
+                           const std::vector<BodyRange>& bodies, ParticleRange owned,
+                           Domain* domain);
 
 }  // namespace gsph
