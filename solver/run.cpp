@@ -749,7 +749,11 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
             double detachedHere = 0.0;  // exact: far below 2^53
             for (Index a = owned.begin; a < owned.end; ++a)
                 if (bonds.detached(a)) detachedHere += 1.0;
-            if (split) options.domain->sum({&detachedHere, 1});
+            if (split) {
+                ExactSum here;
+                here.add(detachedHere);
+                detachedHere = options.domain->total(here);
+            }
             const auto detached = static_cast<Index>(detachedHere);
             Index failed = 0;
             for (Index a = 0; a < sim.reference().size(); ++a)

@@ -104,15 +104,6 @@ inline T deterministicSum(std::ptrdiff_t n, T zero, Term&& term) {
     return deterministicSum(n, zero, std::forward<Term>(term), partial);
 }
 
-/// Σ term(a) over the particles of `range`, in deterministicSum's chunks counted from its
-/// begin (the whole range [0, n) sums exactly as deterministicSum(n, …)).
-template <class T, class Term>
-inline T deterministicSum(ParticleRange range, T zero, Term&& term, std::vector<T>& partial) {
-    return deterministicSum(
-        range.size(), zero,
-        [&](std::ptrdiff_t i) { return term(range.begin + static_cast<Index>(i)); }, partial);
-}
-
 /// Σ term(a) over the particles of `range`, exactly rounded (core/exact_sum.hpp): the same bits
 /// for any thread count and any split of the particles over processes (sum the ExactSums).
 template <class Term>

@@ -111,8 +111,6 @@ class Domain {
     virtual double minimum(double local) { return local; }
     /// Each value's minimum over the processes (exact).
     virtual void minimum(std::span<double> values) { (void)values; }
-    /// Each value summed over the processes, in process order (for counts: exact below 2^53).
-    virtual void sum(std::span<double> values) { (void)values; }
     /// Each exact sum summed over the processes (exact: the same for any process count).
     virtual void sum(std::span<ExactSum> values) { (void)values; }
     /// The exact sum over the processes of each one's `partial`, rounded once.

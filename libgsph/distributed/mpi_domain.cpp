@@ -205,20 +205,6 @@ class MpiDomain final : public Domain {
               "MPI_Allreduce");
     }
 
-    void sum(std::span<double> values) override {
-        const auto n = values.size();
-        partials_.resize(n * static_cast<std::size_t>(size_));
-        check(MPI_Allgather(values.data(), static_cast<int>(n), MPI_DOUBLE, partials_.data(),
-                            static_cast<int>(n), MPI_DOUBLE, MPI_COMM_WORLD),
-              "MPI_Allgather");
-        for (std::size_t k = 0; k < n; ++k) {
-            double total = 0.0;
-            for (std::size_t r = 0; r < static_cast<std::size_t>(size_); ++r)
-                total += partials_[r * n + k];
-            values[k] = total;
-        }
-    }
-
     void sum(std::span<ExactSum> values) override {
         const std::size_t words = ExactSum::kWords;
         exactWords_.resize(values.size() * words);
@@ -367,7 +353,6 @@ class MpiDomain final : public Domain {
     const PairList* pairs_ = nullptr;
     std::vector<std::vector<std::uint8_t>> outgoing_, incoming_;
     std::vector<MPI_Request> requests_;
-    std::vector<double> partials_;
     std::vector<std::int64_t> exactWords_;  ///< scratch of the exact sums
 };
 

@@ -332,7 +332,11 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state, ParticleRange owned, D
     double freshEntries = 0.0;  // exact: far below 2^53
     for (Index a = owned.begin; a < owned.end; ++a)
         freshEntries += static_cast<double>(changed_[static_cast<std::size_t>(a)]);
-    if (split) domain.sum({&freshEntries, 1});
+    if (split) {
+        ExactSum here;
+        here.add(freshEntries);
+        freshEntries = domain.total(here);
+    }
     if (freshEntries == 0.0) return {};
     BondBreak result;
     result.pairs = static_cast<Index>(freshEntries) / 2;
