@@ -3,6 +3,7 @@
 
 #include <Eigen/LU>
 #include <cmath>
+#include <iterator>
 #include <limits>
 
 #include "core/error.hpp"
@@ -105,12 +106,20 @@ std::vector<std::string> Probes::columnNames() const {
     return names;
 }
 
-void Probes::add(const Reference& ref, const State& state) {
+void Probes::add(const Reference& ref, const State& state, ParticleRange owned, Domain* domain) {
+    values_.assign(probes_.size() * std::size(kProbeFields),
+                   std::numeric_limits<double>::infinity());
+    auto value = values_.begin();
+    for (const Probe& p : probes_)
+        for (const ProbeField& f : kProbeFields) {
+            if (owned.contains(p.particle))
+                *value = f.value(ref, state, static_cast<std::size_t>(p.particle));
+            ++value;
+        }
+    if (domain != nullptr) domain->minimum(values_);
     table_.cell("%.9e", state.time);
     table_.cell("%.0f", static_cast<double>(state.step));
-    for (const Probe& p : probes_)
-        for (const ProbeField& f : kProbeFields)
-            table_.cell("%.9e", f.value(ref, state, static_cast<std::size_t>(p.particle)));
+    for (const double v : values_) table_.cell("%.9e", v);
     table_.endRow();
 }
 

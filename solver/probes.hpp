@@ -11,6 +11,7 @@
 
 #include "case_config.hpp"
 #include "csv_table.hpp"
+#include "distributed/domain.hpp"
 #include "particles/reference.hpp"
 #include "particles/state.hpp"
 
@@ -35,14 +36,19 @@ class Probes {
     const std::vector<Probe>& probes() const { return probes_; }
     /// The column names, in the file's order.
     std::vector<std::string> columnNames() const;
-    /// A row of every probe's fields at the state.
-    void add(const Reference& ref, const State& state);
+    /// A row of every probe's fields at the state. `owned`: the particles whose state is
+    /// current here; in a split run (`domain` not null; collective) each probe's fields are
+    /// read where its particle is owned and reach every process through the exact minimum (the
+    /// other processes offer +∞), so no gather of the state is needed.
+    void add(const Reference& ref, const State& state, ParticleRange owned,
+             Domain* domain = nullptr);
     CsvTable& table() { return table_; }
     const CsvTable& table() const { return table_; }
 
   private:
     std::vector<Probe> probes_;
     CsvTable table_;
+    std::vector<double> values_;  ///< a row's values, probe by probe and field by field
 };
 
 }  // namespace gsph::solver

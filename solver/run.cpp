@@ -382,6 +382,13 @@ class RunOutputs {
         return k;
     }
 
+  private:
+    /// The split run's domain; null when serial.
+    Domain* domain() const {
+        return options_.domain && options_.domain->processes() > 1 ? options_.domain.get()
+                                                                   : nullptr;
+    }
+
     /// A split run's state is whole on the writing process only after a gather (collective:
     /// every process calls it at the same points, once per step at most).
     void gather() {
@@ -390,13 +397,11 @@ class RunOutputs {
         gatheredStep_ = sim_.state().step;
     }
 
-  private:
     /// A row of history.csv and of probes.csv.
     void addRow(const Simulation& sim) {
-        // The energies are summed over the processes; the probes read particles anywhere.
-        if (!probes_.empty()) gather();
+        // The energies are summed over the processes, the probes read where their particles are.
         history_.add(sim.state(), sim.energy(), sim.wallForces(), sim.contactForces());
-        if (!probes_.empty()) probes_.add(ref_, sim.state());
+        if (!probes_.empty()) probes_.add(ref_, sim.state(), sim.integrator().owned(), domain());
     }
 
     const CaseConfig& c_;
@@ -727,7 +732,6 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
                                 summary.steps) +
                          summary.checkpoint.string());
     } else {
-        out.gather();  // the count of failed particles below reads every particle
         logEnd(*options.log, summary, sim.integrator().phaseTimes(), sim.energy());
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();
@@ -744,20 +748,23 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         }
         const BrittleBonds& bonds = sim.integrator().bonds();
         if (bonds.enabled()) {
-            // Each process knows its own particles' detachment; the damage is gathered.
+            // Each process counts its own particles (exact: counts far below 2^53).
             const ParticleRange owned = sim.integrator().owned();
-            double detachedHere = 0.0;  // exact: far below 2^53
-            for (Index a = owned.begin; a < owned.end; ++a)
+            double detachedHere = 0.0, failedHere = 0.0;
+            for (Index a = owned.begin; a < owned.end; ++a) {
                 if (bonds.detached(a)) detachedHere += 1.0;
+                if (sim.state().damage[static_cast<std::size_t>(a)] >= 1.0) failedHere += 1.0;
+            }
             if (split) {
-                ExactSum here;
-                here.add(detachedHere);
-                detachedHere = options.domain->total(here);
+                ExactSum counts[2];
+                counts[0].add(detachedHere);
+                counts[1].add(failedHere);
+                options.domain->sum(counts);
+                detachedHere = counts[0].value();
+                failedHere = counts[1].value();
             }
             const auto detached = static_cast<Index>(detachedHere);
-            Index failed = 0;
-            for (Index a = 0; a < sim.reference().size(); ++a)
-                if (sim.state().damage[static_cast<std::size_t>(a)] >= 1.0) ++failed;
+            const auto failed = static_cast<Index>(failedHere);
             // The initial cracks' share, from the reference alone (also after a restart).
             Index initial = 0;
             if (!sim.integrator().options().precracks.empty()) {

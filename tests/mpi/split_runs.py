@@ -13,6 +13,8 @@ the restart below). Asserts
     ledger's scalars (exactly rounded sums over the processes);
   - history.csv byte for byte: the columns the state gives (time, step, kinetic and elastic
     energy, ...), the ledger's and the walls' forces;
+  - probes.csv byte for byte (probes on the first and the last particle, and at the impact
+    face's centre: each read where its particle is owned);
   - contact between bodies: the plate-and-projectile sample on 3 processes, its final snapshot
     and its history (contact forces between the bodies included) byte for byte the serial run's;
   - bonds that break across the cuts: Kalthoff-Winkler at its coarsest spacing (h = 2.5 mm;
@@ -138,6 +140,9 @@ def split_like_serial(a, name, case, args, env, bonds=False, counts=(2, 3, 4)):
                                               os.path.join(folder, "checkpoint.h5"))]
         faults += compare_history(os.path.join(serial, "history.csv"),
                                   os.path.join(folder, "history.csv"))
+        if os.path.exists(os.path.join(serial, "probes.csv")):
+            faults += compare_history(os.path.join(serial, "probes.csv"),
+                                      os.path.join(folder, "probes.csv"))
         said = ""
         if bonds:
             if bond_line(folder) != bond_line(serial) or not bond_line(serial):
@@ -180,9 +185,21 @@ def main():
             "--set", "nr=3", "--set", "nz=30", "--set", "grading=1.08", "-o", particles],
            os.path.join(a.out, "preproc.log")) != 0:
         sys.exit("split_runs: gsph-preproc failed")
+    # With probes on the first and the last particle (on the first and the last process) and
+    # at the impact face's centre: probes.csv byte for byte too.
+    with open(case) as f:
+        text = f.read()
+    taylor = os.path.join(a.out, "taylor_probes.toml")
+    with open(taylor, "w") as f:
+        f.write(text.replace('file = "../../materials/',
+                             f'file = "{os.path.join(a.source, "materials")}/', 1))
+        with h5py.File(particles, "r") as p:
+            last = len(p["particles/X"]) - 1
+        f.write(f'\n[[probe]]\nname = "first"\nparticle = 0\n\n[[probe]]\nname = "last"\n'
+                f'particle = {last}\n\n[[probe]]\nname = "centre"\npoint = [0.0, 0.0, 0.0]\n')
     # The serial runs: the threaded serial build.
     env = dict(os.environ, OMP_NUM_THREADS="2")
-    faults, serial = split_like_serial(a, "taylor_ogrid", case, ["--particles", particles], env)
+    faults, serial = split_like_serial(a, "taylor_ogrid", taylor, ["--particles", particles], env)
     if serial is None:
         sys.exit("split_runs: " + faults[0])
     # Contact between bodies (a search in the current configuration over every particle): the
