@@ -20,8 +20,10 @@
 #include <type_traits>
 #include <utility>
 
-// The strip types never cross a function boundary that is not inlined (the kernels are
-// always_inline inside their target function), so the ABI note on AVX vectors does not apply.
+// The strip types never cross a function boundary that is not inlined (every function on strips
+// is always_inline, so it inlines into its target function: no lambdas, no plain member
+// functions), so the ABI note on AVX vectors does not apply. The sanitizer build compiles the
+// kernels' files unoptimized, where a call left out of line would show (libgsph/CMakeLists.txt).
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace gsph {

@@ -24,17 +24,20 @@ template <class T>
 struct StripMat3 {
     T m[3][3];
 
-    T& operator()(int r, int c) { return m[r][c]; }
-    const T& operator()(int r, int c) const { return m[r][c]; }
+    // Every function on strips is always inlined: called out of line from a kernel built for a
+    // wider SIMD target, a strip passed or returned by value is an ABI mismatch (wrong values in
+    // an unoptimized build).
+    [[gnu::always_inline]] T& operator()(int r, int c) { return m[r][c]; }
+    [[gnu::always_inline]] const T& operator()(int r, int c) const { return m[r][c]; }
 
-    static StripMat3 identity() {
+    [[gnu::always_inline]] static StripMat3 identity() {
         StripMat3 i;
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) i.m[r][c] = T{} + (r == c ? 1.0 : 0.0);
         return i;
     }
-    T trace() const { return m[0][0] + m[1][1] + m[2][2]; }
-    StripMat3 transpose() const {
+    [[gnu::always_inline]] T trace() const { return m[0][0] + m[1][1] + m[2][2]; }
+    [[gnu::always_inline]] StripMat3 transpose() const {
         StripMat3 t;
         for (int r = 0; r < 3; ++r)
             for (int c = 0; c < 3; ++c) t.m[r][c] = m[c][r];
@@ -96,13 +99,16 @@ template <class T>
     return inv;
 }
 
+/// a₀ₚ (a₁q a₂r − a₁r a₂q): a term of det a (a function, not a lambda: always inlined).
+template <class T>
+[[gnu::always_inline]] inline T determinantTerm(const StripMat3<T>& a, int p, int q, int r) {
+    return a.m[0][p] * (a.m[1][q] * a.m[2][r] - a.m[1][r] * a.m[2][q]);
+}
+
 /// det a, expanded along the first row.
 template <class T>
 [[gnu::always_inline]] inline T determinant(const StripMat3<T>& a) {
-    const auto part = [&](int p, int q, int r) {
-        return a.m[0][p] * (a.m[1][q] * a.m[2][r] - a.m[1][r] * a.m[2][q]);
-    };
-    return part(0, 1, 2) - part(1, 0, 2) + part(2, 0, 1);
+    return determinantTerm(a, 0, 1, 2) - determinantTerm(a, 1, 0, 2) + determinantTerm(a, 2, 0, 1);
 }
 
 /// cof F = J F^{-T}: columns F₁×F₂, F₂×F₀, F₀×F₁ (F_i: columns of F; Nanson, the force factors).
