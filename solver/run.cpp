@@ -261,6 +261,9 @@ class RunOutputs {
     ProgressBar& progress() { return progress_; }
     std::filesystem::path checkpointPath() const { return options_.runDir / kCheckpointName; }
     int snapshotsWritten() const { return snapshots_; }
+    /// A split run's gathers of the state to process 0 for the files: how many, and their time.
+    int gathers() const { return gathers_; }
+    double gatherSeconds() const { return gatherSeconds_; }
 
     /// A history row and a snapshot of the simulation's state (a scheduled one, or the last
     /// of a stopped run).
@@ -392,8 +395,11 @@ class RunOutputs {
     /// A split run's state is whole on the writing process only after a gather (collective:
     /// every process calls it at the same points, once per step at most).
     void gather() {
-        if (gatheredStep_ == sim_.state().step) return;
+        if (gatheredStep_ == sim_.state().step || domain() == nullptr) return;
+        const auto t0 = Clock::now();
         sim_.gatherState();
+        gatherSeconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
+        ++gathers_;
         gatheredStep_ = sim_.state().step;
     }
 
@@ -409,6 +415,8 @@ class RunOutputs {
     Simulation& sim_;
     bool writes_;  ///< this process writes the files (the others keep them in memory only)
     long gatheredStep_ = -1;
+    int gathers_ = 0;
+    double gatherSeconds_ = 0.0;
     RunLog& log_;
     const Reference& ref_;
     std::vector<CheckpointInput> inputs_;
@@ -735,15 +743,17 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         logEnd(*options.log, summary, sim.integrator().phaseTimes(), sim.energy());
         if (split) {
             const PhaseTimes& t = sim.integrator().phaseTimes();
-            char line[300];
+            char line[400];
             const Domain::BytesSent sent = options.domain->bytesSent();
             const double steps = static_cast<double>(std::max<long>(summary.steps - firstStep, 1));
             std::snprintf(line, sizeof line,
                           "process 0: %.2f s of the steps exchanging ghosts' columns (of %.2f s "
                           "in the steps); sent per step: %.1f kB of its particles' columns to "
-                          "others' ghosts, %.1f kB of contact positions",
+                          "others' ghosts, %.1f kB of contact positions; %d gathers of the state "
+                          "for the files, %.3g s",
                           t.exchange, t.kinematicsAndStress + t.forces + t.contact + t.other,
-                          sent.ghosts / 1e3 / steps, sent.contact / 1e3 / steps);
+                          sent.ghosts / 1e3 / steps, sent.contact / 1e3 / steps, out.gathers(),
+                          out.gatherSeconds());
             options.log->add(line);
         }
         const BrittleBonds& bonds = sim.integrator().bonds();
