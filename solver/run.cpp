@@ -2,6 +2,7 @@
 #include "run.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -758,23 +759,16 @@ RunSummary runCase(const CaseConfig& caseConfig, const RunOptions& options) {
         }
         const BrittleBonds& bonds = sim.integrator().bonds();
         if (bonds.enabled()) {
-            // Each process counts its own particles (exact: counts far below 2^53).
+            // Each process counts its own particles; the counts are summed over the processes.
             const ParticleRange owned = sim.integrator().owned();
-            double detachedHere = 0.0, failedHere = 0.0;
-            for (Index a = owned.begin; a < owned.end; ++a) {
-                if (bonds.detached(a)) detachedHere += 1.0;
-                if (sim.state().damage[static_cast<std::size_t>(a)] >= 1.0) failedHere += 1.0;
-            }
-            if (split) {
-                ExactSum counts[2];
-                counts[0].add(detachedHere);
-                counts[1].add(failedHere);
-                options.domain->sum(counts);
-                detachedHere = counts[0].value();
-                failedHere = counts[1].value();
-            }
-            const auto detached = static_cast<Index>(detachedHere);
-            const auto failed = static_cast<Index>(failedHere);
+            std::array<ExactSum, 2> counts = {
+                exactSum(owned, [&](Index a) { return bonds.detached(a) ? 1.0 : 0.0; }),
+                exactSum(owned, [&](Index a) {
+                    return sim.state().damage[static_cast<std::size_t>(a)] >= 1.0 ? 1.0 : 0.0;
+                })};
+            if (split) options.domain->sum(counts);
+            const auto detached = static_cast<Index>(counts[0].value());
+            const auto failed = static_cast<Index>(counts[1].value());
             // The initial cracks' share, from the reference alone (also after a restart).
             Index initial = 0;
             if (!sim.integrator().options().precracks.empty()) {

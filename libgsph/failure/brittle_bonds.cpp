@@ -329,14 +329,9 @@ BondBreak BrittleBonds::breakStretchedBonds(State& state, ParticleRange owned, D
             if (newlyFailed_[ia] != 0) failedSeen_[ia] = 1;
         });
     // Both sides of a pair break in the same call: each fresh pair is counted twice.
-    double freshEntries = 0.0;  // exact: far below 2^53
-    for (Index a = owned.begin; a < owned.end; ++a)
-        freshEntries += static_cast<double>(changed_[static_cast<std::size_t>(a)]);
-    if (split) {
-        ExactSum here;
-        here.add(freshEntries);
-        freshEntries = domain.total(here);
-    }
+    const double freshEntries = domain.total(exactSum(owned, [&](Index a) {
+        return static_cast<double>(changed_[static_cast<std::size_t>(a)]);
+    }));
     if (freshEntries == 0.0) return {};
     BondBreak result;
     result.pairs = static_cast<Index>(freshEntries) / 2;
